@@ -1,0 +1,42 @@
+#pragma once
+/* Dirichlet conditions on named surfaces: fixed, roller (chosen components), symmetry plane and
+   prescribed displacement. Rows are zeroed with their columns, so the matrix keeps block size 3
+   (GAMG) and stays symmetric (CG). */
+#include <petscmat.h>
+#include "ind_mesh.h"
+#include "ind_disc.h"
+#include "ind_assembly.h"
+
+#define IND_MAX_BC 64
+
+typedef struct {
+  char        label[IND_NAME_LEN];
+  char        option[32];   /* the option that asked for it, for messages */
+  PetscInt    mask;         /* bit c set: component c constrained */
+  PetscReal   value[3];     /* nm, at full load (constant conditions) */
+  IndVectorFn fn;           /* or a function of position, nm at full load */
+  void       *ctx;
+} IndBCSpec;
+
+typedef struct _p_IndBC *IndBC;
+struct _p_IndBC {
+  IndMesh    mesh;
+  IndDisc    disc;
+  PetscInt   nspec;
+  IndBCSpec  spec[IND_MAX_BC];
+  PetscBool  setup;
+  PetscInt   nrows;   /* constrained rows owned by this rank */
+  PetscInt  *rows;    /* global row numbers */
+  PetscInt  *lrows;   /* the same rows, local to the owned part of a global vector */
+  PetscReal *values;  /* value of each row at full load */
+};
+
+PetscErrorCode IndBCCreate(IndMesh mesh, IndDisc disc, IndBC *bc);
+PetscErrorCode IndBCDestroy(IndBC *bc);
+PetscErrorCode IndBCAddFunction(IndBC bc, const char label[], PetscInt mask, IndVectorFn fn, void *ctx);
+PetscErrorCode IndBCSetUp(IndBC bc);
+/* U[row] = load_factor * value at every constrained row. */
+PetscErrorCode IndBCApplySolution(IndBC bc, PetscReal load_factor, Vec U);
+/* F[row] = U[row] - load_factor * value. */
+PetscErrorCode IndBCApplyResidual(IndBC bc, PetscReal load_factor, Vec U, Vec F);
+PetscErrorCode IndBCApplyJacobian(IndBC bc, Mat J);

@@ -1,0 +1,22 @@
+#pragma once
+/* Shared by every indent source file: PETSc compatibility and the project's log events. */
+#include <petscsys.h>
+
+#ifndef PETSC_SUCCESS
+  #define PETSC_SUCCESS 0 /* PETSc < 3.19 returns plain 0 */
+#endif
+
+#define IND_NAME_LEN 128
+
+typedef struct {
+  PetscLogStage setup, solve, output;
+  PetscLogEvent mesh_create, mesh_distribute, geometry, residual, jacobian, bc, output_write;
+} IndLogTable;
+
+/* Registered once by IndLogRegister(); read-only afterwards. */
+extern IndLogTable IndLog;
+
+PetscErrorCode IndLogRegister(void);
+
+/* Errors on options nobody read, except those PETSc only reads lazily (see options.c). */
+PetscErrorCode IndOptionsCheckUnused(MPI_Comm comm);

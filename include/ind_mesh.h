@@ -1,0 +1,27 @@
+#pragma once
+/* The distributed DMPlex mesh and its named regions (gmsh physical names or box faces). */
+#include <petscdmplex.h>
+#include "ind_common.h"
+
+#define IND_MAX_REGIONS 64
+
+typedef struct {
+  char     name[IND_NAME_LEN];
+  PetscInt dim; /* 3: volume (a set of cells), 2: surface (a set of faces) */
+} IndRegion;
+
+typedef struct _p_IndMesh *IndMesh;
+struct _p_IndMesh {
+  DM        dm;        /* owned; distributed; each region is a DMLabel of that name with value 1 */
+  PetscBool simplex;   /* tetrahedra (true) or hexahedra (false); the same on every rank */
+  PetscInt  nregions;
+  IndRegion regions[IND_MAX_REGIONS];
+  char      source[PETSC_MAX_PATH_LEN]; /* mesh file, or "box" */
+};
+
+PetscErrorCode IndMeshCreate(MPI_Comm comm, IndMesh *mesh);
+PetscErrorCode IndMeshDestroy(IndMesh *mesh);
+/* The label of a region; a missing region is an error naming the option that asked for it. */
+PetscErrorCode IndMeshGetRegionLabel(IndMesh mesh, const char name[], PetscInt dim, const char option[], DMLabel *label);
+/* Sets the partitioner of a serial mesh from -mesh_partitioner (partition.c). */
+PetscErrorCode IndMeshSetPartitioner(DM dm);

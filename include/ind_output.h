@@ -1,0 +1,31 @@
+#pragma once
+/* HDF5 output through PETSc viewers, with an XDMF index that ParaView opens:
+   /geometry/vertices and /topology/cells once, then per output step /fields/displacement (vertices),
+   /fields/stress, /fields/strain, /fields/von_mises (cell averages). Provenance as attributes of "/". */
+#include <petscviewerhdf5.h>
+#include "ind_mesh.h"
+#include "ind_disc.h"
+#include "ind_assembly.h"
+
+#define IND_MAX_OUTPUT_STEPS 100000
+
+typedef struct _p_IndOutput *IndOutput;
+struct _p_IndOutput {
+  IndMesh     mesh;
+  IndDisc     disc;
+  PetscBool   enabled;
+  char        dir[PETSC_MAX_PATH_LEN];
+  char        h5name[PETSC_MAX_PATH_LEN];
+  PetscViewer viewer;
+  DM          vdm, c6dm, c1dm; /* vertex (3 dof), cell (6 dof) and cell (1 dof) layouts */
+  Vec         Uloc, vloc, disp, stress, strain, vonmises;
+  PetscReal  *cstress, *cstrain;
+  PetscInt    nsteps;
+  PetscReal  *times;
+  PetscInt    nvert, ncell, corners; /* global counts */
+};
+
+PetscErrorCode IndOutputCreate(IndMesh mesh, IndDisc disc, IndOutput *out);
+PetscErrorCode IndOutputDestroy(IndOutput *out);
+/* Appends one step (time = load factor, or indenter depth later) to the HDF5 file and rewrites the XDMF. */
+PetscErrorCode IndOutputWriteStep(IndOutput out, PetscReal time, Vec U, IndAssembly assembly);

@@ -1,0 +1,61 @@
+#pragma once
+/* Small-strain von Mises plasticity at one quadrature point (THEORY.md section 1): Voce or linear
+   isotropic hardening, linear Prager kinematic hardening, radial return and consistent tangent.
+   Pure: depends only on petscsys.h, holds no PETSc objects and no globals, so every quadrature point
+   can call it independently and it can be unit tested alone.
+
+   Voigt order [xx, yy, zz, xy, yz, xz]. Conventions of the vectors:
+   - total strain eps and plastic strain eps_p carry ENGINEERING shears (gamma_xy = 2 eps_xy), so
+     eps - eps_p is an elastic strain in the same convention as the B matrix produces;
+   - stress sigma and back stress x carry TENSOR components;
+   - D (6x6, row-major) maps an engineering strain increment to a stress increment,
+     dsigma[i] = sum_j D[6 i + j] deps[j]; it is symmetric.
+   Units: stresses and moduli in GPa, strains and p dimensionless. */
+#include <petscsys.h>
+
+#ifndef PETSC_SUCCESS
+  #define PETSC_SUCCESS 0 /* PETSc < 3.19 returns plain 0 */
+#endif
+
+typedef enum {
+  IND_HARDENING_VOCE,  /* R(p) = Rs - (Rs - R0) exp(-gamma p) */
+  IND_HARDENING_LINEAR /* R(p) = R0 + h p */
+} IndHardening;
+/* Names for PetscOptionsEnum(): "voce", "linear". */
+extern const char *const IndHardeningTypes[];
+
+typedef struct {
+  PetscReal    kappa, mu; /* bulk and shear moduli, GPa */
+  IndHardening hardening;
+  PetscReal    R0;        /* initial yield stress, GPa: -<region>_yield */
+  PetscReal    Rs;        /* Voce saturation stress, GPa: -<region>_saturation */
+  PetscReal    gamma;     /* Voce rate: -<region>_voce_rate */
+  PetscReal    h;         /* linear hardening slope, GPa: -<region>_hardening_slope */
+  PetscReal    H;         /* Prager kinematic modulus, GPa: -<region>_kinematic */
+  PetscBool    elastic_only;   /* skip the return: linear elasticity with the same moduli */
+  PetscInt     max_iterations; /* cap on the scalar return solve; 0 means 100 */
+} IndPlasticParams;
+
+/* History of a quadrature point at the end of a converged step; all zero for a virgin material. */
+typedef struct {
+  PetscReal eps_p[6]; /* plastic strain, engineering shears, deviatoric */
+  PetscReal x[6];     /* back stress, tensor components, deviatoric, GPa */
+  PetscReal p;        /* accumulated equivalent plastic strain */
+} IndPlasticState;
+
+typedef enum { IND_PLASTIC_OK, IND_PLASTIC_NOT_CONVERGED } IndPlasticStatus;
+
+PetscReal IndPlasticR(const IndPlasticParams *m, PetscReal p);
+PetscReal IndPlasticdR(const IndPlasticParams *m, PetscReal p);
+
+/* Rejects non-physical parameters; prefix is the region's option prefix ("film_") used to name the
+   offending option in the message. Plastic parameters are not checked when elastic_only is set. */
+PetscErrorCode IndPlasticParamsCheck(const IndPlasticParams *m, const char prefix[], MPI_Comm comm);
+
+/* Stress update from the total strain eps at t_{n+1} and the history old at t_n.
+   Writes new_state (may be the same pointer as old), sigma, and, when not NULL, the consistent
+   tangent D and the increment dp of p (0 for an elastic step).
+   On IND_PLASTIC_NOT_CONVERGED new_state is a copy of old and sigma, D and *dp_out are NaN, so a
+   caller that forgets the status still cannot converge on an invented state: reject the step
+   (e.g. SNESSetFunctionDomainError) and cut it. */
+IndPlasticStatus IndPlasticUpdate(const IndPlasticParams *m, const PetscReal eps[6], const IndPlasticState *old, IndPlasticState *new_state, PetscReal sigma[6], PetscReal D[36], PetscReal *dp_out);

@@ -1,0 +1,227 @@
+#include "ind_assembly.h"
+#include "ind_elasticity.h"
+
+PetscErrorCode IndAssemblyCreate(IndDisc disc, IndMaterials mats, IndAssembly *out)
+{
+  IndAssembly a;
+  PetscInt    nd = disc->ndof;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscCalloc1(1, &a));
+  a->disc = disc;
+  a->mats = mats;
+  PetscCall(PetscMalloc5(nd, &a->ue, nd, &a->fe, nd * nd, &a->Ke, disc->nb * 3, &a->G, 6 * nd, &a->DB));
+  *out = a;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode IndAssemblyDestroy(IndAssembly *a)
+{
+  PetscFunctionBeginUser;
+  if (!*a) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(PetscFree5((*a)->ue, (*a)->fe, (*a)->Ke, (*a)->G, (*a)->DB));
+  PetscCall(PetscFree(*a));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Engineering strain from the gradients G (nb x 3) and the cell displacements u (nb x 3). */
+static inline void Strain(PetscInt nb, const PetscReal *G, const PetscReal *u, PetscReal eps[6])
+{
+  for (int k = 0; k < 6; ++k) eps[k] = 0.0;
+  for (PetscInt a = 0; a < nb; ++a) {
+    const PetscReal gx = G[3 * a], gy = G[3 * a + 1], gz = G[3 * a + 2], ux = u[3 * a], uy = u[3 * a + 1], uz = u[3 * a + 2];
+    eps[0] += gx * ux;
+    eps[1] += gy * uy;
+    eps[2] += gz * uz;
+    eps[3] += gy * ux + gx * uy;
+    eps[4] += gz * uy + gy * uz;
+    eps[5] += gz * ux + gx * uz;
+  }
+}
+
+static inline void GatherCell(IndDisc disc, PetscInt i, const PetscScalar *u, PetscReal *ue)
+{
+  const PetscInt *idx = disc->lidx + i * disc->ndof;
+  for (PetscInt k = 0; k < disc->ndof; ++k) ue[k] = PetscRealPart(u[idx[k]]);
+}
+
+/* The constitutive response of one quadrature point; plasticity plugs in here. */
+static inline void MaterialResponse(const IndMaterial *m, const PetscReal eps[6], PetscReal sigma[6], PetscReal *D)
+{
+  IndElasticStress(m->kappa, m->mu, eps, sigma);
+  if (D) IndElasticTangent(m->kappa, m->mu, D);
+}
+
+PetscErrorCode IndAssemblyResidual(IndAssembly a, Vec Uloc, Vec Floc)
+{
+  IndDisc            disc = a->disc;
+  const PetscInt     nb = disc->nb, nq = disc->nq;
+  const PetscScalar *u;
+  PetscScalar       *f;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(IndLog.residual, 0, 0, 0, 0));
+  PetscCall(VecZeroEntries(Floc));
+  PetscCall(VecGetArrayRead(Uloc, &u));
+  PetscCall(VecGetArray(Floc, &f));
+  for (PetscInt i = 0; i < disc->ncell; ++i) {
+    const IndMaterial *m   = &a->mats->mat[a->mats->cell_material[i]];
+    const PetscInt    *idx = disc->lidx + i * disc->ndof;
+
+    GatherCell(disc, i, u, a->ue);
+    PetscCall(PetscArrayzero(a->fe, disc->ndof));
+    for (PetscInt q = 0; q < nq; ++q) {
+      const PetscReal w = disc->wdetJ[i * nq + q];
+      PetscReal       eps[6], s[6];
+
+      IndDiscGradients(disc, i, q, a->G);
+      Strain(nb, a->G, a->ue, eps);
+      MaterialResponse(m, eps, s, NULL);
+      for (PetscInt b = 0; b < nb; ++b) {
+        const PetscReal gx = a->G[3 * b], gy = a->G[3 * b + 1], gz = a->G[3 * b + 2];
+        a->fe[3 * b + 0] += w * (gx * s[0] + gy * s[3] + gz * s[5]);
+        a->fe[3 * b + 1] += w * (gy * s[1] + gx * s[3] + gz * s[4]);
+        a->fe[3 * b + 2] += w * (gz * s[2] + gy * s[4] + gx * s[5]);
+      }
+      if (a->body_force) {
+        PetscReal bf[3];
+        PetscCall(a->body_force(disc->xq + (i * nq + q) * 3, bf, a->body_ctx));
+        for (PetscInt b = 0; b < nb; ++b)
+          for (int c = 0; c < 3; ++c) a->fe[3 * b + c] -= w * disc->N[q * nb + b] * bf[c];
+      }
+    }
+    for (PetscInt k = 0; k < disc->ndof; ++k) f[idx[k]] += a->fe[k];
+  }
+  PetscCall(VecRestoreArrayRead(Uloc, &u));
+  PetscCall(VecRestoreArray(Floc, &f));
+  PetscCall(PetscLogFlops(disc->ncell * nq * (30.0 * nb)));
+  PetscCall(PetscLogEventEnd(IndLog.residual, 0, 0, 0, 0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Ke += w B^T D B, using the sparsity of B: column 3b+c of B holds the gradient of N_b. */
+static inline void AddBtDB(PetscInt nb, const PetscReal *G, const PetscReal D[36], PetscReal w, PetscReal *DB, PetscReal *Ke)
+{
+  const PetscInt nd = 3 * nb;
+  for (PetscInt b = 0; b < nb; ++b) {
+    const PetscReal gx = G[3 * b], gy = G[3 * b + 1], gz = G[3 * b + 2];
+    for (int r = 0; r < 6; ++r) {
+      const PetscReal *Dr = D + r * 6;
+      DB[r * nd + 3 * b + 0] = Dr[0] * gx + Dr[3] * gy + Dr[5] * gz;
+      DB[r * nd + 3 * b + 1] = Dr[1] * gy + Dr[3] * gx + Dr[4] * gz;
+      DB[r * nd + 3 * b + 2] = Dr[2] * gz + Dr[4] * gy + Dr[5] * gx;
+    }
+  }
+  for (PetscInt a = 0; a < nb; ++a) {
+    const PetscReal gx = w * G[3 * a], gy = w * G[3 * a + 1], gz = w * G[3 * a + 2];
+    PetscReal      *K0 = Ke + (3 * a) * nd, *K1 = K0 + nd, *K2 = K1 + nd;
+    for (PetscInt k = 0; k < nd; ++k) {
+      K0[k] += gx * DB[0 * nd + k] + gy * DB[3 * nd + k] + gz * DB[5 * nd + k];
+      K1[k] += gy * DB[1 * nd + k] + gx * DB[3 * nd + k] + gz * DB[4 * nd + k];
+      K2[k] += gz * DB[2 * nd + k] + gy * DB[4 * nd + k] + gx * DB[5 * nd + k];
+    }
+  }
+}
+
+PetscErrorCode IndAssemblyJacobian(IndAssembly a, Vec Uloc, Mat J)
+{
+  IndDisc            disc = a->disc;
+  const PetscInt     nb = disc->nb, nq = disc->nq, nd = disc->ndof;
+  const PetscScalar *u;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(IndLog.jacobian, 0, 0, 0, 0));
+  PetscCall(MatZeroEntries(J));
+  PetscCall(VecGetArrayRead(Uloc, &u));
+  for (PetscInt i = 0; i < disc->ncell; ++i) {
+    const IndMaterial *m = &a->mats->mat[a->mats->cell_material[i]];
+    const PetscInt    *g = disc->gidx + i * nd;
+
+    GatherCell(disc, i, u, a->ue);
+    PetscCall(PetscArrayzero(a->Ke, nd * nd));
+    for (PetscInt q = 0; q < nq; ++q) {
+      PetscReal eps[6], s[6], D[36];
+      IndDiscGradients(disc, i, q, a->G);
+      Strain(nb, a->G, a->ue, eps);
+      MaterialResponse(m, eps, s, D);
+      AddBtDB(nb, a->G, D, disc->wdetJ[i * nq + q], a->DB, a->Ke);
+    }
+    PetscCall(MatSetValues(J, nd, g, nd, g, a->Ke, ADD_VALUES));
+  }
+  PetscCall(VecRestoreArrayRead(Uloc, &u));
+  PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));
+  PetscCall(PetscLogFlops(disc->ncell * nq * (6.0 * nd * nd + 36.0 * nd)));
+  PetscCall(PetscLogEventEnd(IndLog.jacobian, 0, 0, 0, 0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode IndAssemblyCreateMatrix(IndAssembly a, Mat *J)
+{
+  IndDisc      disc = a->disc;
+  MPI_Comm     comm = PetscObjectComm((PetscObject)disc->dm);
+  PetscSection gs;
+  PetscInt     nlocal;
+  Mat          P;
+  PetscScalar *zeros;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMGetGlobalSection(disc->dm, &gs));
+  PetscCall(PetscSectionGetConstrainedStorageSize(gs, &nlocal));
+  PetscCall(MatCreate(comm, &P));
+  PetscCall(MatSetType(P, MATPREALLOCATOR));
+  PetscCall(MatSetSizes(P, nlocal, nlocal, PETSC_DETERMINE, PETSC_DETERMINE));
+  PetscCall(MatSetBlockSize(P, 3));
+  PetscCall(MatSetUp(P));
+  PetscCall(PetscCalloc1(disc->ndof * disc->ndof, &zeros));
+  for (PetscInt i = 0; i < disc->ncell; ++i) {
+    const PetscInt *g = disc->gidx + i * disc->ndof;
+    PetscCall(MatSetValues(P, disc->ndof, g, disc->ndof, g, zeros, INSERT_VALUES));
+  }
+  PetscCall(PetscFree(zeros));
+  PetscCall(MatAssemblyBegin(P, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(P, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatCreate(comm, J));
+  PetscCall(MatSetType(*J, MATAIJ));
+  PetscCall(MatSetSizes(*J, nlocal, nlocal, PETSC_DETERMINE, PETSC_DETERMINE));
+  PetscCall(MatSetBlockSize(*J, 3));
+  PetscCall(MatSetOptionsPrefix(*J, "jac_"));
+  PetscCall(MatSetFromOptions(*J));
+  PetscCall(MatPreallocatorPreallocate(P, PETSC_TRUE, *J));
+  PetscCall(MatDestroy(&P));
+  PetscCall(MatSetOption(*J, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_TRUE));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode IndAssemblyCellAverages(IndAssembly a, Vec Uloc, PetscReal *stress, PetscReal *strain)
+{
+  IndDisc            disc = a->disc;
+  const PetscInt     nq   = disc->nq;
+  const PetscScalar *u;
+
+  PetscFunctionBeginUser;
+  PetscCall(VecGetArrayRead(Uloc, &u));
+  for (PetscInt i = 0; i < disc->ncell; ++i) {
+    const IndMaterial *m   = &a->mats->mat[a->mats->cell_material[i]];
+    PetscReal          vol = 0, savg[6] = {0}, eavg[6] = {0};
+    GatherCell(disc, i, u, a->ue);
+    for (PetscInt q = 0; q < nq; ++q) {
+      const PetscReal w = disc->wdetJ[i * nq + q];
+      PetscReal       eps[6], s[6];
+      IndDiscGradients(disc, i, q, a->G);
+      Strain(disc->nb, a->G, a->ue, eps);
+      MaterialResponse(m, eps, s, NULL);
+      vol += w;
+      for (int k = 0; k < 6; ++k) {
+        savg[k] += w * s[k];
+        eavg[k] += w * eps[k];
+      }
+    }
+    for (int k = 0; k < 6; ++k) {
+      stress[6 * i + k] = savg[k] / vol;
+      strain[6 * i + k] = eavg[k] / vol;
+    }
+  }
+  PetscCall(VecRestoreArrayRead(Uloc, &u));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}

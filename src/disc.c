@@ -1,0 +1,117 @@
+#include "ind_disc.h"
+
+static PetscErrorCode CacheReferenceTabulation(IndDisc disc)
+{
+  PetscTabulation T;
+  PetscInt        Nb, Nc;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscFEGetCellTabulation(disc->fe, 1, &T));
+  Nb = T->Nb;
+  Nc = T->Nc;
+  PetscCheck(Nc == 3 && Nb % 3 == 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "Unexpected vector basis layout (Nb %" PetscInt_FMT ", Nc %" PetscInt_FMT ")", Nb, Nc);
+  disc->nb   = Nb / 3;
+  disc->ndof = Nb;
+  PetscCall(PetscMalloc2(disc->nq * disc->nb, &disc->N, disc->nq * disc->nb * 3, &disc->dN));
+  /* The vector Lagrange basis is node-major with the component fastest: function 3a+c is N_a e_c.
+     The scalar N_a is read off function 3a, component 0; the layout is checked, not assumed. */
+  for (PetscInt q = 0; q < disc->nq; ++q)
+    for (PetscInt b = 0; b < Nb; ++b)
+      for (PetscInt c = 0; c < Nc; ++c) {
+        PetscReal v = T->T[0][(q * Nb + b) * Nc + c];
+        if (c != b % 3) PetscCheck(PetscAbsReal(v) < 1e-12, PETSC_COMM_SELF, PETSC_ERR_PLIB, "Vector basis is not node-major with interleaved components");
+        else if (c == 0) {
+          disc->N[q * disc->nb + b / 3] = v;
+          for (PetscInt d = 0; d < 3; ++d) disc->dN[(q * disc->nb + b / 3) * 3 + d] = T->T[1][((q * Nb + b) * Nc + c) * 3 + d];
+        }
+      }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode CacheCells(IndDisc disc, PetscQuadrature quad)
+{
+  DM                     dm = disc->dm;
+  PetscSection           s;
+  ISLocalToGlobalMapping ltog;
+  const PetscReal       *qpoints;
+  PetscReal             *v, *J, *detJ;
+  PetscInt               cEnd;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(IndLog.geometry, 0, 0, 0, 0));
+  PetscCall(DMPlexGetHeightStratum(dm, 0, &disc->cStart, &cEnd));
+  disc->ncell = cEnd - disc->cStart;
+  PetscCall(DMGetLocalSection(dm, &s));
+  PetscCall(DMGetLocalToGlobalMapping(dm, &ltog));
+  PetscCall(PetscQuadratureGetData(quad, NULL, NULL, NULL, &qpoints, NULL));
+  PetscCall(PetscMalloc5(disc->ncell * disc->ndof, &disc->lidx, disc->ncell * disc->ndof, &disc->gidx, disc->ncell * disc->nq, &disc->wdetJ, disc->ncell * disc->nq * 9, &disc->invJ, disc->ncell * disc->nq * 3, &disc->xq));
+  PetscCall(PetscMalloc3(disc->nq * 3, &v, disc->nq * 9, &J, disc->nq, &detJ));
+  for (PetscInt i = 0; i < disc->ncell; ++i) {
+    PetscInt  c = disc->cStart + i, n, *idx = NULL;
+    PetscReal *iJ = disc->invJ + i * disc->nq * 9;
+
+    PetscCall(DMPlexGetClosureIndices(dm, s, s, c, PETSC_TRUE, &n, &idx, NULL, NULL));
+    PetscCheck(n == disc->ndof, PETSC_COMM_SELF, PETSC_ERR_PLIB, "Cell %" PetscInt_FMT " has %" PetscInt_FMT " closure dofs, expected %" PetscInt_FMT, c, n, disc->ndof);
+    PetscCall(PetscArraycpy(disc->lidx + i * n, idx, n));
+    PetscCall(DMPlexRestoreClosureIndices(dm, s, s, c, PETSC_TRUE, &n, &idx, NULL, NULL));
+
+    for (PetscInt q = 0; q < disc->nq; ++q) detJ[q] = -1.0;
+    PetscCall(DMPlexComputeCellGeometryFEM(dm, c, quad, v, J, iJ, detJ));
+    /* Affine cells may get their (constant) geometry at the first point only. */
+    for (PetscInt q = 1; q < disc->nq; ++q)
+      if (detJ[q] == -1.0) {
+        detJ[q] = detJ[0];
+        PetscCall(PetscArraycpy(iJ + q * 9, iJ, 9));
+      }
+    for (PetscInt q = 0; q < disc->nq; ++q) {
+      PetscCheck(detJ[q] > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "Cell %" PetscInt_FMT " is inverted or degenerate (det J = %g at quadrature point %" PetscInt_FMT ")", c, (double)detJ[q], q);
+      disc->wdetJ[i * disc->nq + q] = disc->w[q] * detJ[q];
+    }
+    PetscCall(DMPlexReferenceToCoordinates(dm, c, disc->nq, qpoints, disc->xq + i * disc->nq * 3));
+  }
+  PetscCall(ISLocalToGlobalMappingApply(ltog, disc->ncell * disc->ndof, disc->lidx, disc->gidx));
+  PetscCall(PetscFree3(v, J, detJ));
+  PetscCall(PetscLogEventEnd(IndLog.geometry, 0, 0, 0, 0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode IndDiscCreate(IndMesh mesh, IndDisc *out)
+{
+  IndDisc         disc;
+  MPI_Comm        comm = PetscObjectComm((PetscObject)mesh->dm);
+  PetscInt        qorder = PETSC_DETERMINE;
+  PetscQuadrature quad;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscCalloc1(1, &disc));
+  disc->dm     = mesh->dm;
+  disc->degree = 1;
+  PetscOptionsBegin(comm, NULL, "Discretisation", "Disc");
+  PetscCall(PetscOptionsInt("-disc_degree", "Polynomial degree of the displacement: 1 (P1/Q1) or 2 (P2/Q2)", "", disc->degree, &disc->degree, NULL));
+  PetscCall(PetscOptionsInt("-disc_quadrature_order", "Order of the quadrature rule (default: PETSc's choice for the degree)", "", qorder, &qorder, NULL));
+  PetscOptionsEnd();
+  PetscCheck(disc->degree == 1 || disc->degree == 2, comm, PETSC_ERR_ARG_OUTOFRANGE, "-disc_degree must be 1 or 2, got %" PetscInt_FMT, disc->degree);
+  PetscCheck(qorder == PETSC_DETERMINE || (qorder >= 1 && qorder <= 12), comm, PETSC_ERR_ARG_OUTOFRANGE, "-disc_quadrature_order must lie in [1, 12], got %" PetscInt_FMT, qorder);
+
+  PetscCall(PetscFECreateLagrange(comm, 3, 3, mesh->simplex, disc->degree, qorder, &disc->fe));
+  PetscCall(PetscObjectSetName((PetscObject)disc->fe, "displacement"));
+  PetscCall(DMSetField(disc->dm, 0, NULL, (PetscObject)disc->fe));
+  PetscCall(DMCreateDS(disc->dm));
+  PetscCall(PetscFEGetQuadrature(disc->fe, &quad));
+  PetscCall(PetscQuadratureGetData(quad, NULL, NULL, &disc->nq, NULL, &disc->w));
+  PetscCall(CacheReferenceTabulation(disc));
+  PetscCall(CacheCells(disc, quad));
+  *out = disc;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode IndDiscDestroy(IndDisc *disc)
+{
+  PetscFunctionBeginUser;
+  if (!*disc) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(PetscFree2((*disc)->N, (*disc)->dN));
+  PetscCall(PetscFree5((*disc)->lidx, (*disc)->gidx, (*disc)->wdetJ, (*disc)->invJ, (*disc)->xq));
+  PetscCall(PetscFEDestroy(&(*disc)->fe));
+  PetscCall(PetscFree(*disc));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}

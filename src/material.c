@@ -1,0 +1,76 @@
+#include "ind_material.h"
+#include "ind_elasticity.h"
+
+static PetscErrorCode ReadMaterial(MPI_Comm comm, const char region[], IndMaterial *m)
+{
+  char      prefix[IND_NAME_LEN + 2], opt[IND_NAME_LEN + 32];
+  PetscBool has_E, has_nu;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscStrncpy(m->region, region, sizeof(m->region)));
+  PetscCall(PetscSNPrintf(prefix, sizeof(prefix), "%s_", region));
+  PetscOptionsBegin(comm, prefix, "Material of a volume region", "Material");
+  PetscCall(PetscOptionsReal("-young", "Young's modulus (GPa)", "", m->young, &m->young, &has_E));
+  PetscCall(PetscOptionsReal("-poisson", "Poisson's ratio", "", m->poisson, &m->poisson, &has_nu));
+  PetscOptionsEnd();
+  PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%syoung", prefix));
+  PetscCheck(has_E, comm, PETSC_ERR_ARG_WRONG, "Region '%s' needs a material: option %s (GPa) is missing", region, opt);
+  PetscCheck(m->young > 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "%s must be > 0 (GPa), got %g", opt, (double)m->young);
+  PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%spoisson", prefix));
+  PetscCheck(has_nu, comm, PETSC_ERR_ARG_WRONG, "Region '%s' needs a material: option %s is missing", region, opt);
+  PetscCheck(m->poisson > -1.0 && m->poisson < 0.5, comm, PETSC_ERR_ARG_OUTOFRANGE, "%s must lie in (-1, 0.5), got %g", opt, (double)m->poisson);
+  IndElasticModuli(m->young, m->poisson, &m->kappa, &m->mu);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode IndMaterialsCreate(IndMesh mesh, IndDisc disc, IndMaterials *out)
+{
+  IndMaterials mats;
+  MPI_Comm     comm = PetscObjectComm((PetscObject)mesh->dm);
+  PetscInt     unassigned = 0, first = -1;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscCalloc1(1, &mats));
+  PetscCall(PetscMalloc1(disc->ncell, &mats->cell_material));
+  for (PetscInt i = 0; i < disc->ncell; ++i) mats->cell_material[i] = -1;
+  for (PetscInt r = 0; r < mesh->nregions; ++r) {
+    DMLabel label;
+    IS      cells;
+    if (mesh->regions[r].dim != 3) continue;
+    PetscCall(ReadMaterial(comm, mesh->regions[r].name, &mats->mat[mats->n]));
+    PetscCall(DMGetLabel(mesh->dm, mesh->regions[r].name, &label));
+    PetscCall(DMLabelGetStratumIS(label, 1, &cells));
+    if (cells) {
+      const PetscInt *c;
+      PetscInt        n;
+      PetscCall(ISGetLocalSize(cells, &n));
+      PetscCall(ISGetIndices(cells, &c));
+      for (PetscInt k = 0; k < n; ++k) {
+        PetscInt i = c[k] - disc->cStart;
+        if (i < 0 || i >= disc->ncell) continue;
+        PetscCheck(mats->cell_material[i] < 0, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "Cell %" PetscInt_FMT " lies in two volume regions, '%s' and '%s'", c[k], mats->mat[mats->cell_material[i]].region, mesh->regions[r].name);
+        mats->cell_material[i] = mats->n;
+      }
+      PetscCall(ISRestoreIndices(cells, &c));
+      PetscCall(ISDestroy(&cells));
+    }
+    mats->n++;
+  }
+  for (PetscInt i = 0; i < disc->ncell; ++i)
+    if (mats->cell_material[i] < 0) {
+      if (!unassigned++) first = disc->cStart + i;
+    }
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &unassigned, 1, MPIU_INT, MPI_SUM, comm));
+  PetscCheck(!unassigned, comm, PETSC_ERR_ARG_WRONG, "%" PetscInt_FMT " cells of mesh '%s' (e.g. local cell %" PetscInt_FMT ") belong to no physical volume: give every volume a physical name in gmsh", unassigned, mesh->source, first);
+  *out = mats;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode IndMaterialsDestroy(IndMaterials *mats)
+{
+  PetscFunctionBeginUser;
+  if (!*mats) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(PetscFree((*mats)->cell_material));
+  PetscCall(PetscFree(*mats));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}

@@ -1,0 +1,310 @@
+#include <stdint.h>
+#include <math.h>
+#include <petscsf.h>
+#include "ind_mesh.h"
+
+/* gmsh writes "dim tag "name"" lines in $PhysicalNames in both format 2.2 and 4.1, also in binary
+   files; PETSc turns the tags into "Cell Sets"/"Face Sets" values, and we give them their names. */
+static PetscErrorCode ReadGmshPhysicalNames(MPI_Comm comm, const char file[], IndMesh mesh)
+{
+  PetscMPIInt rank;
+  int         n = 0, dims[IND_MAX_REGIONS], tags[IND_MAX_REGIONS];
+  char        names[IND_MAX_REGIONS][IND_NAME_LEN];
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  if (rank == 0) {
+    FILE *fp = fopen(file, "r");
+    char  line[1024];
+    PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "Cannot open mesh file '%s' (-mesh_file)", file);
+    while (fgets(line, sizeof(line), fp)) {
+      if (strncmp(line, "$PhysicalNames", 14)) {
+        if (!strncmp(line, "$Nodes", 6) || !strncmp(line, "$Entities", 9)) break;
+        continue;
+      }
+      PetscCheck(fgets(line, sizeof(line), fp) && sscanf(line, "%d", &n) == 1, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "Malformed $PhysicalNames in '%s'", file);
+      PetscCheck(n <= IND_MAX_REGIONS, PETSC_COMM_SELF, PETSC_ERR_SUP, "'%s' has %d physical names; at most %d are supported", file, n, IND_MAX_REGIONS);
+      for (int i = 0; i < n; ++i) {
+        char *q1, *q2;
+        PetscCheck(fgets(line, sizeof(line), fp) && sscanf(line, "%d %d", &dims[i], &tags[i]) == 2, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "Malformed $PhysicalNames line %d in '%s'", i + 1, file);
+        q1 = strchr(line, '"');
+        q2 = q1 ? strchr(q1 + 1, '"') : NULL;
+        PetscCheck(q1 && q2 && q2 - q1 - 1 < IND_NAME_LEN, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "Malformed physical name on line %d of $PhysicalNames in '%s'", i + 1, file);
+        *q2 = 0;
+        PetscCall(PetscStrncpy(names[i], q1 + 1, IND_NAME_LEN));
+      }
+      break;
+    }
+    fclose(fp);
+  }
+  PetscCallMPI(MPI_Bcast(&n, 1, MPI_INT, 0, comm));
+  PetscCallMPI(MPI_Bcast(dims, n, MPI_INT, 0, comm));
+  PetscCallMPI(MPI_Bcast(tags, n, MPI_INT, 0, comm));
+  PetscCallMPI(MPI_Bcast(names, n * IND_NAME_LEN, MPI_CHAR, 0, comm));
+
+  /* Regions in the file without a physical name still get a usable name. */
+  for (PetscInt d = 2; d <= 3; ++d) {
+    DMLabel     set;
+    IS          valueIS = NULL;
+    PetscInt    nv      = 0;
+    const PetscInt *vals = NULL;
+    PetscInt    gvals[IND_MAX_REGIONS], ng = 0;
+
+    PetscCall(DMGetLabel(mesh->dm, d == 3 ? "Cell Sets" : "Face Sets", &set));
+    if (set) {
+      PetscCall(DMLabelGetValueIS(set, &valueIS));
+      PetscCall(ISGetLocalSize(valueIS, &nv));
+      PetscCall(ISGetIndices(valueIS, &vals));
+    }
+    for (PetscInt i = 0; i < nv && ng < IND_MAX_REGIONS; ++i) gvals[ng++] = vals[i];
+    if (valueIS) {
+      PetscCall(ISRestoreIndices(valueIS, &vals));
+      PetscCall(ISDestroy(&valueIS));
+    }
+    PetscCallMPI(MPI_Bcast(&ng, 1, MPIU_INT, 0, comm));
+    PetscCallMPI(MPI_Bcast(gvals, ng, MPIU_INT, 0, comm));
+    for (PetscInt i = 0; i < ng; ++i) {
+      const char *name = NULL;
+      char        fallback[IND_NAME_LEN];
+      DMLabel     label;
+      IS          pts = NULL;
+
+      for (int k = 0; k < n; ++k)
+        if (dims[k] == d && tags[k] == gvals[i]) name = names[k];
+      if (!name) {
+        PetscCall(PetscSNPrintf(fallback, sizeof(fallback), "%s%" PetscInt_FMT, d == 3 ? "volume" : "surface", gvals[i]));
+        name = fallback;
+      }
+      PetscCheck(mesh->nregions < IND_MAX_REGIONS, comm, PETSC_ERR_SUP, "Too many regions in '%s'", file);
+      PetscCall(PetscStrncpy(mesh->regions[mesh->nregions].name, name, IND_NAME_LEN));
+      mesh->regions[mesh->nregions++].dim = d;
+      PetscCall(DMCreateLabel(mesh->dm, name));
+      PetscCall(DMGetLabel(mesh->dm, name, &label));
+      if (set) PetscCall(DMLabelGetStratumIS(set, gvals[i], &pts));
+      if (pts) {
+        PetscCall(DMLabelSetStratumIS(label, 1, pts));
+        PetscCall(ISDestroy(&pts));
+      }
+    }
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode AddRegion(IndMesh mesh, const char name[], PetscInt dim, const char setname[], PetscInt value)
+{
+  DMLabel set, label;
+  IS      pts = NULL;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscStrncpy(mesh->regions[mesh->nregions].name, name, IND_NAME_LEN));
+  mesh->regions[mesh->nregions++].dim = dim;
+  PetscCall(DMCreateLabel(mesh->dm, name));
+  PetscCall(DMGetLabel(mesh->dm, name, &label));
+  PetscCall(DMGetLabel(mesh->dm, setname, &set));
+  if (set) PetscCall(DMLabelGetStratumIS(set, value, &pts));
+  if (pts) PetscCall(DMLabelSetStratumIS(label, 1, pts));
+  PetscCall(ISDestroy(&pts));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode CreateBoxMesh(MPI_Comm comm, IndMesh mesh)
+{
+  PetscInt  faces[3] = {2, 2, 2}, n = 3, cStart, cEnd;
+  PetscReal lower[3] = {0, 0, 0}, upper[3] = {1, 1, 1};
+  DMLabel   cells;
+  /* PETSc's hexahedral box marks its faces in "Face Sets" with these values. */
+  const char *names[6] = {"bottom", "top", "front", "back", "right", "left"};
+
+  PetscFunctionBeginUser;
+  PetscOptionsBegin(comm, NULL, "Built-in box mesh (used when -mesh_file is not given)", "Mesh");
+  PetscCall(PetscOptionsIntArray("-dm_plex_box_faces", "Number of hexahedra along x,y,z", "", faces, &n, NULL));
+  n = 3;
+  PetscCall(PetscOptionsRealArray("-dm_plex_box_lower", "Lower corner x,y,z (nm)", "", lower, &n, NULL));
+  n = 3;
+  PetscCall(PetscOptionsRealArray("-dm_plex_box_upper", "Upper corner x,y,z (nm)", "", upper, &n, NULL));
+  PetscOptionsEnd();
+  for (int d = 0; d < 3; ++d) {
+    PetscCheck(faces[d] > 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-dm_plex_box_faces needs three positive counts");
+    PetscCheck(upper[d] > lower[d], comm, PETSC_ERR_ARG_OUTOFRANGE, "-dm_plex_box_upper must exceed -dm_plex_box_lower in every direction");
+  }
+  PetscCall(DMPlexCreateBoxMesh(comm, 3, PETSC_FALSE, faces, lower, upper, NULL, PETSC_TRUE, &mesh->dm));
+  PetscCall(DMCreateLabel(mesh->dm, "Cell Sets"));
+  PetscCall(DMGetLabel(mesh->dm, "Cell Sets", &cells));
+  PetscCall(DMPlexGetHeightStratum(mesh->dm, 0, &cStart, &cEnd));
+  for (PetscInt c = cStart; c < cEnd; ++c) PetscCall(DMLabelSetValue(cells, c, 1));
+  PetscCall(AddRegion(mesh, "domain", 3, "Cell Sets", 1));
+  for (PetscInt i = 0; i < 6; ++i) PetscCall(AddRegion(mesh, names[i], 2, "Face Sets", i + 1));
+  PetscCall(PetscStrncpy(mesh->source, "box", sizeof(mesh->source)));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Decided on the serial mesh: after distribution a rank may hold no cell (PLATFORM.md). */
+static PetscErrorCode CheckCellTypes(MPI_Comm comm, IndMesh mesh)
+{
+  PetscInt dim, cStart, cEnd, flags[2] = {0, 0}; /* tets, hexes */
+
+  PetscFunctionBeginUser;
+  PetscCall(DMGetDimension(mesh->dm, &dim));
+  PetscCheck(dim == 3, comm, PETSC_ERR_ARG_WRONG, "Mesh '%s' is %" PetscInt_FMT "D; indent needs a 3D mesh", mesh->source, dim);
+  PetscCall(DMPlexGetHeightStratum(mesh->dm, 0, &cStart, &cEnd));
+  for (PetscInt c = cStart; c < cEnd; ++c) {
+    DMPolytopeType ct;
+    PetscCall(DMPlexGetCellType(mesh->dm, c, &ct));
+    if (ct == DM_POLYTOPE_TETRAHEDRON) flags[0] = 1;
+    else if (ct == DM_POLYTOPE_HEXAHEDRON) flags[1] = 1;
+    else SETERRQ(comm, PETSC_ERR_SUP, "Mesh '%s' has a cell of type %s; only tetrahedra and hexahedra are supported", mesh->source, DMPolytopeTypes[ct]);
+  }
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, flags, 2, MPIU_INT, MPI_MAX, comm));
+  PetscCheck(flags[0] + flags[1] == 1, comm, PETSC_ERR_SUP, "Mesh '%s' mixes tetrahedra and hexahedra (or has no cells)", mesh->source);
+  mesh->simplex = flags[0] ? PETSC_TRUE : PETSC_FALSE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static inline uint64_t SplitMix64(uint64_t z)
+{
+  z += 0x9e3779b97f4a7c15ULL;
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+  return z ^ (z >> 31);
+}
+
+/* Moves interior vertices by up to frac * (shortest edge) in a direction hashed from the vertex's
+   own coordinates, so the distorted mesh is the same on any number of ranks. */
+static PetscErrorCode PerturbInteriorVertices(IndMesh mesh, PetscReal frac)
+{
+  DM           dm = mesh->dm, cdm;
+  DMLabel      boundary;
+  Vec          X;
+  PetscScalar *x;
+  PetscSection cs;
+  PetscInt     vStart, vEnd, eStart, eEnd;
+  PetscReal    hmin = PETSC_MAX_REAL;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMGetCoordinateDM(dm, &cdm));
+  PetscCall(DMGetLocalSection(cdm, &cs));
+  PetscCall(DMPlexGetDepthStratum(dm, 0, &vStart, &vEnd));
+  PetscCall(DMPlexGetDepthStratum(dm, 1, &eStart, &eEnd));
+  for (PetscInt e = eStart; e < eEnd; ++e) {
+    PetscInt dof;
+    PetscCall(PetscSectionGetDof(cs, e, &dof));
+    PetscCheck(dof == 0, PETSC_COMM_SELF, PETSC_ERR_SUP, "-mesh_perturb supports only straight-sided (first-order) meshes");
+  }
+  PetscCall(DMGetCoordinatesLocal(dm, &X));
+  PetscCall(VecGetArray(X, &x));
+  for (PetscInt e = eStart; e < eEnd; ++e) {
+    const PetscInt *cone;
+    PetscInt        o0, o1;
+    PetscReal       l2 = 0;
+    PetscCall(DMPlexGetCone(dm, e, &cone));
+    PetscCall(PetscSectionGetOffset(cs, cone[0], &o0));
+    PetscCall(PetscSectionGetOffset(cs, cone[1], &o1));
+    for (int d = 0; d < 3; ++d) l2 += PetscSqr(PetscRealPart(x[o0 + d] - x[o1 + d]));
+    hmin = PetscMin(hmin, PetscSqrtReal(l2));
+  }
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &hmin, 1, MPIU_REAL, MPI_MIN, PetscObjectComm((PetscObject)dm)));
+  PetscCall(DMLabelCreate(PETSC_COMM_SELF, "boundary", &boundary));
+  PetscCall(DMPlexMarkBoundaryFaces(dm, 1, boundary));
+  PetscCall(DMPlexLabelComplete(dm, boundary));
+  for (PetscInt v = vStart; v < vEnd; ++v) {
+    PetscInt    off, val;
+    uint64_t h = 0;
+    PetscCall(DMLabelGetValue(boundary, v, &val));
+    if (val == 1) continue;
+    PetscCall(PetscSectionGetOffset(cs, v, &off));
+    for (int d = 0; d < 3; ++d) h = SplitMix64(h ^ (uint64_t)(int64_t)round(PetscRealPart(x[off + d]) / hmin * 1e6));
+    for (int d = 0; d < 3; ++d) {
+      h = SplitMix64(h);
+      x[off + d] += frac * hmin * ((PetscReal)(h >> 11) / 9007199254740992.0 - 0.5);
+    }
+  }
+  PetscCall(VecRestoreArray(X, &x));
+  PetscCall(DMSetCoordinatesLocal(dm, X));
+  PetscCall(DMLabelDestroy(&boundary));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode IndMeshCreate(MPI_Comm comm, IndMesh *out)
+{
+  IndMesh   mesh;
+  char      file[PETSC_MAX_PATH_LEN] = "";
+  PetscBool has_file;
+  PetscInt  refine = 0;
+  PetscReal perturb = 0;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscCalloc1(1, &mesh));
+  PetscOptionsBegin(comm, NULL, "Mesh options", "Mesh");
+  PetscCall(PetscOptionsString("-mesh_file", "gmsh mesh (.msh, format 2.2 or 4.1); the built-in box mesh is used without it", "", file, file, sizeof(file), &has_file));
+  PetscCall(PetscOptionsInt("-mesh_refine", "Uniform refinements after distribution", "", refine, &refine, NULL));
+  PetscCall(PetscOptionsReal("-mesh_perturb", "Random displacement of interior vertices, as a fraction of the shortest edge (tests)", "", perturb, &perturb, NULL));
+  PetscOptionsEnd();
+  PetscCheck(refine >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-mesh_refine must be >= 0, got %" PetscInt_FMT, refine);
+  PetscCheck(perturb >= 0 && perturb < 0.5, comm, PETSC_ERR_ARG_OUTOFRANGE, "-mesh_perturb must lie in [0, 0.5), got %g", (double)perturb);
+
+  PetscCall(PetscLogEventBegin(IndLog.mesh_create, 0, 0, 0, 0));
+  if (has_file) {
+    PetscBool exists;
+    PetscCall(PetscTestFile(file, 'r', &exists));
+    PetscCheck(exists, comm, PETSC_ERR_FILE_OPEN, "Mesh file '%s' (-mesh_file) does not exist or is not readable", file);
+    PetscCall(DMPlexCreateFromFile(comm, file, "indent", PETSC_TRUE, &mesh->dm));
+    PetscCall(PetscStrncpy(mesh->source, file, sizeof(mesh->source)));
+    PetscCall(ReadGmshPhysicalNames(comm, file, mesh));
+  } else PetscCall(CreateBoxMesh(comm, mesh));
+  PetscCall(PetscObjectSetName((PetscObject)mesh->dm, "mesh"));
+  PetscCall(CheckCellTypes(comm, mesh));
+  PetscCall(PetscLogEventEnd(IndLog.mesh_create, 0, 0, 0, 0));
+
+  PetscCall(PetscLogEventBegin(IndLog.mesh_distribute, 0, 0, 0, 0));
+  PetscCall(IndMeshSetPartitioner(mesh->dm));
+  {
+    DM dist = NULL;
+    PetscCall(DMPlexDistribute(mesh->dm, 0, NULL, &dist));
+    if (dist) { /* NULL on one rank: keep the serial mesh */
+      PetscCall(DMDestroy(&mesh->dm));
+      mesh->dm = dist;
+    }
+  }
+  for (PetscInt r = 0; r < refine; ++r) {
+    DM fine;
+    PetscCall(DMRefine(mesh->dm, comm, &fine));
+    PetscCall(DMDestroy(&mesh->dm));
+    mesh->dm = fine;
+  }
+  PetscCall(PetscObjectSetName((PetscObject)mesh->dm, "mesh"));
+  PetscCall(PetscLogEventEnd(IndLog.mesh_distribute, 0, 0, 0, 0));
+  if (perturb > 0) PetscCall(PerturbInteriorVertices(mesh, perturb));
+  PetscCall(DMViewFromOptions(mesh->dm, NULL, "-mesh_view"));
+  *out = mesh;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode IndMeshDestroy(IndMesh *mesh)
+{
+  PetscFunctionBeginUser;
+  if (!*mesh) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(DMDestroy(&(*mesh)->dm));
+  PetscCall(PetscFree(*mesh));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode IndMeshGetRegionLabel(IndMesh mesh, const char name[], PetscInt dim, const char option[], DMLabel *label)
+{
+  char list[2048] = "";
+
+  PetscFunctionBeginUser;
+  for (PetscInt i = 0; i < mesh->nregions; ++i) {
+    PetscBool same;
+    PetscCall(PetscStrcmp(mesh->regions[i].name, name, &same));
+    if (same && mesh->regions[i].dim == dim) {
+      PetscCall(DMGetLabel(mesh->dm, name, label));
+      PetscFunctionReturn(PETSC_SUCCESS);
+    }
+    if (mesh->regions[i].dim == dim) {
+      PetscCall(PetscStrlcat(list, " ", sizeof(list)));
+      PetscCall(PetscStrlcat(list, mesh->regions[i].name, sizeof(list)));
+    }
+  }
+  SETERRQ(PetscObjectComm((PetscObject)mesh->dm), PETSC_ERR_ARG_WRONG, "Mesh '%s' has no %s named '%s' (required by %s); its %ss are:%s", mesh->source, dim == 3 ? "volume" : "surface",
+          name, option, dim == 3 ? "volume" : "surface", list[0] ? list : " (none)");
+}

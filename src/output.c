@@ -1,0 +1,306 @@
+#include <petscsf.h>
+#include "ind_output.h"
+#include "ind_elasticity.h"
+#include "ind_version.h"
+
+/* A clone of the mesh with dof unknowns on every point of one stratum (depth 0: vertices, height 0: cells). */
+static PetscErrorCode CreateStratumDM(DM dm, PetscBool cells, PetscInt dof, DM *out)
+{
+  PetscSection s;
+  PetscInt     pStart, pEnd, sStart, sEnd;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMClone(dm, out));
+  PetscCall(DMPlexGetChart(dm, &pStart, &pEnd));
+  if (cells) PetscCall(DMPlexGetHeightStratum(dm, 0, &sStart, &sEnd));
+  else PetscCall(DMPlexGetDepthStratum(dm, 0, &sStart, &sEnd));
+  PetscCall(PetscSectionCreate(PetscObjectComm((PetscObject)dm), &s));
+  PetscCall(PetscSectionSetChart(s, pStart, pEnd));
+  for (PetscInt p = sStart; p < sEnd; ++p) PetscCall(PetscSectionSetDof(s, p, dof));
+  PetscCall(PetscSectionSetUp(s));
+  PetscCall(DMSetLocalSection(*out, s));
+  PetscCall(PetscSectionDestroy(&s));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Copies 3 values per vertex from a vector laid out by section src into the vertex layout. */
+static PetscErrorCode GatherVertexValues(IndOutput o, PetscSection src, const PetscScalar *in, Vec global)
+{
+  PetscSection vs;
+  PetscScalar *v;
+  PetscInt     vStart, vEnd;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMGetLocalSection(o->vdm, &vs));
+  PetscCall(DMPlexGetDepthStratum(o->vdm, 0, &vStart, &vEnd));
+  PetscCall(VecGetArray(o->vloc, &v));
+  for (PetscInt p = vStart; p < vEnd; ++p) {
+    PetscInt so, vo;
+    PetscCall(PetscSectionGetOffset(src, p, &so));
+    PetscCall(PetscSectionGetOffset(vs, p, &vo));
+    for (int c = 0; c < 3; ++c) v[vo + c] = in[so + c];
+  }
+  PetscCall(VecRestoreArray(o->vloc, &v));
+  PetscCall(DMLocalToGlobal(o->vdm, o->vloc, INSERT_VALUES, global));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Cell-to-vertex connectivity in global vertex numbers and VTK/XDMF vertex order. */
+static PetscErrorCode CreateTopology(IndOutput o, IS *topo)
+{
+  DM           dm = o->vdm;
+  PetscSection gs;
+  PetscInt     cStart, cEnd, vStart, vEnd, *conn, n = 0;
+  /* DMPlex orders a hexahedron's top face the other way round from VTK, and its tetrahedra with the
+     opposite orientation; these maps give VTK's positive-volume order. */
+  const PetscInt hex[8] = {0, 3, 2, 1, 4, 7, 6, 5}, tet[4] = {1, 0, 2, 3};
+  const PetscInt *perm = o->mesh->simplex ? tet : hex;
+
+  PetscFunctionBeginUser;
+  o->corners = o->mesh->simplex ? 4 : 8;
+  PetscCall(DMGetGlobalSection(dm, &gs));
+  PetscCall(DMPlexGetHeightStratum(dm, 0, &cStart, &cEnd));
+  PetscCall(DMPlexGetDepthStratum(dm, 0, &vStart, &vEnd));
+  PetscCall(PetscMalloc1((cEnd - cStart) * o->corners, &conn));
+  for (PetscInt c = cStart; c < cEnd; ++c) {
+    PetscInt *closure = NULL, ncl, verts[8], nv = 0;
+    PetscCall(DMPlexGetTransitiveClosure(dm, c, PETSC_TRUE, &ncl, &closure));
+    for (PetscInt j = 0; j < ncl; ++j) {
+      PetscInt p = closure[2 * j], off;
+      if (p < vStart || p >= vEnd) continue;
+      PetscCall(PetscSectionGetOffset(gs, p, &off));
+      verts[nv++] = (off >= 0 ? off : -(off + 1)) / 3;
+    }
+    PetscCall(DMPlexRestoreTransitiveClosure(dm, c, PETSC_TRUE, &ncl, &closure));
+    PetscCheck(nv == o->corners, PETSC_COMM_SELF, PETSC_ERR_PLIB, "Cell %" PetscInt_FMT " has %" PetscInt_FMT " vertices", c, nv);
+    for (PetscInt k = 0; k < nv; ++k) conn[n++] = verts[perm[k]];
+  }
+  PetscCall(ISCreateGeneral(PetscObjectComm((PetscObject)dm), n, conn, PETSC_OWN_POINTER, topo));
+  PetscCall(ISSetBlockSize(*topo, o->corners));
+  PetscCall(PetscObjectSetName((PetscObject)*topo, "cells"));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode WriteProvenance(IndOutput o)
+{
+  PetscMPIInt size;
+  PetscInt    ranks;
+  char       *opts, petsc[256], date[256];
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_size(PetscObjectComm((PetscObject)o->vdm), &size));
+  ranks = size;
+  PetscCall(PetscGetVersion(petsc, sizeof(petsc)));
+  PetscCall(PetscGetDate(date, sizeof(date)));
+  PetscCall(PetscOptionsGetAll(NULL, &opts));
+  PetscCall(PetscViewerHDF5WriteAttribute(o->viewer, "/", "indent_version", PETSC_STRING, INDENT_VERSION));
+  PetscCall(PetscViewerHDF5WriteAttribute(o->viewer, "/", "git_commit", PETSC_STRING, INDENT_GIT_COMMIT));
+  PetscCall(PetscViewerHDF5WriteAttribute(o->viewer, "/", "petsc_version", PETSC_STRING, petsc));
+  PetscCall(PetscViewerHDF5WriteAttribute(o->viewer, "/", "mpi_ranks", PETSC_INT, &ranks));
+  PetscCall(PetscViewerHDF5WriteAttribute(o->viewer, "/", "options", PETSC_STRING, opts));
+  PetscCall(PetscViewerHDF5WriteAttribute(o->viewer, "/", "mesh", PETSC_STRING, o->mesh->source));
+  PetscCall(PetscViewerHDF5WriteAttribute(o->viewer, "/", "disc_degree", PETSC_INT, &o->disc->degree));
+  PetscCall(PetscViewerHDF5WriteAttribute(o->viewer, "/", "created", PETSC_STRING, date));
+  PetscCall(PetscFree(opts));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode OpenFile(IndOutput o)
+{
+  MPI_Comm     comm = PetscObjectComm((PetscObject)o->vdm);
+  PetscMPIInt  rank;
+  DM           cdm;
+  Vec          X, coords, plain;
+  PetscSection cs;
+  const PetscScalar *x;
+  IS           topo;
+  PetscInt     n;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  if (rank == 0) PetscCall(PetscMkdir(o->dir));
+  PetscCallMPI(MPI_Barrier(comm));
+  PetscCall(PetscViewerHDF5Open(comm, o->h5name, FILE_MODE_WRITE, &o->viewer));
+  PetscCall(PetscViewerHDF5SetBaseDimension2(o->viewer, PETSC_TRUE));
+  PetscCall(WriteProvenance(o));
+
+  PetscCall(DMGetCoordinateDM(o->mesh->dm, &cdm));
+  PetscCall(DMGetLocalSection(cdm, &cs));
+  PetscCall(DMGetCoordinatesLocal(o->mesh->dm, &X));
+  PetscCall(DMCreateGlobalVector(o->vdm, &coords));
+  PetscCall(VecGetArrayRead(X, &x));
+  PetscCall(GatherVertexValues(o, cs, x, coords));
+  PetscCall(VecRestoreArrayRead(X, &x));
+  PetscCall(VecGetSize(coords, &n));
+  o->nvert = n / 3;
+  /* A vector without a DM: DMPlex vectors always land in /fields. */
+  PetscCall(VecGetLocalSize(coords, &n));
+  PetscCall(VecCreateMPI(comm, n, PETSC_DETERMINE, &plain));
+  PetscCall(VecSetBlockSize(plain, 3));
+  PetscCall(VecCopy(coords, plain));
+  PetscCall(PetscObjectSetName((PetscObject)plain, "vertices"));
+  PetscCall(PetscViewerHDF5PushGroup(o->viewer, "/geometry"));
+  PetscCall(VecView(plain, o->viewer));
+  PetscCall(PetscViewerHDF5PopGroup(o->viewer));
+  PetscCall(VecDestroy(&plain));
+  PetscCall(VecDestroy(&coords));
+
+  PetscCall(CreateTopology(o, &topo));
+  PetscCall(ISGetSize(topo, &n));
+  o->ncell = n / o->corners;
+  PetscCall(PetscViewerHDF5PushGroup(o->viewer, "/topology"));
+  PetscCall(ISView(topo, o->viewer));
+  PetscCall(PetscViewerHDF5PopGroup(o->viewer));
+  PetscCall(ISDestroy(&topo));
+  PetscCall(PetscViewerHDF5PushTimestepping(o->viewer));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode WriteXdmf(IndOutput o)
+{
+  PetscMPIInt rank;
+  char        path[PETSC_MAX_PATH_LEN], h5base[PETSC_MAX_PATH_LEN];
+  FILE       *fp;
+  const char *cell = o->mesh->simplex ? "Tetrahedron" : "Hexahedron";
+  const struct {
+    const char *name, *type, *center;
+    PetscInt    n, bs;
+  } fields[] = {
+    {"displacement", "Vector", "Node", o->nvert, 3},
+    {"stress", "Tensor6", "Cell", o->ncell, 6},
+    {"strain", "Tensor6", "Cell", o->ncell, 6},
+    {"von_mises", "Scalar", "Cell", o->ncell, 1},
+  };
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(PetscObjectComm((PetscObject)o->vdm), &rank));
+  if (rank) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(PetscSNPrintf(path, sizeof(path), "%s/indent.xdmf", o->dir));
+  PetscCall(PetscStrncpy(h5base, "indent.h5", sizeof(h5base)));
+  fp = fopen(path, "w");
+  PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "Cannot write '%s' (-output_dir)", path);
+  fprintf(fp, "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"2.0\">\n<Domain>\n");
+  fprintf(fp, "<DataItem Name=\"cells\" Format=\"HDF\" NumberType=\"Int\" Precision=\"%d\" Dimensions=\"%" PetscInt_FMT " %" PetscInt_FMT "\">%s:/topology/cells</DataItem>\n", (int)sizeof(PetscInt), o->ncell, o->corners, h5base);
+  fprintf(fp, "<DataItem Name=\"vertices\" Format=\"HDF\" NumberType=\"Float\" Precision=\"8\" Dimensions=\"%" PetscInt_FMT " 3\">%s:/geometry/vertices</DataItem>\n", o->nvert, h5base);
+  fprintf(fp, "<Grid Name=\"steps\" GridType=\"Collection\" CollectionType=\"Temporal\">\n");
+  for (PetscInt t = 0; t < o->nsteps; ++t) {
+    fprintf(fp, "<Grid Name=\"step %" PetscInt_FMT "\" GridType=\"Uniform\">\n<Time Value=\"%.10g\"/>\n", t, (double)o->times[t]);
+    fprintf(fp, "<Topology TopologyType=\"%s\" NumberOfElements=\"%" PetscInt_FMT "\"><DataItem Reference=\"XML\">/Xdmf/Domain/DataItem[@Name=\"cells\"]</DataItem></Topology>\n", cell, o->ncell);
+    fprintf(fp, "<Geometry GeometryType=\"XYZ\"><DataItem Reference=\"XML\">/Xdmf/Domain/DataItem[@Name=\"vertices\"]</DataItem></Geometry>\n");
+    for (size_t f = 0; f < sizeof(fields) / sizeof(fields[0]); ++f) {
+      fprintf(fp, "<Attribute Name=\"%s\" AttributeType=\"%s\" Center=\"%s\">\n", fields[f].name, fields[f].type, fields[f].center);
+      fprintf(fp, "<DataItem ItemType=\"HyperSlab\" Dimensions=\"%" PetscInt_FMT " %" PetscInt_FMT "\" Type=\"HyperSlab\">\n", fields[f].n, fields[f].bs);
+      fprintf(fp, "<DataItem Dimensions=\"3 3\" Format=\"XML\">%" PetscInt_FMT " 0 0 1 1 1 1 %" PetscInt_FMT " %" PetscInt_FMT "</DataItem>\n", t, fields[f].n, fields[f].bs);
+      fprintf(fp, "<DataItem Format=\"HDF\" NumberType=\"Float\" Precision=\"8\" Dimensions=\"%" PetscInt_FMT " %" PetscInt_FMT " %" PetscInt_FMT "\">%s:/fields/%s</DataItem>\n", o->nsteps, fields[f].n, fields[f].bs, h5base, fields[f].name);
+      fprintf(fp, "</DataItem>\n</Attribute>\n");
+    }
+    fprintf(fp, "</Grid>\n");
+  }
+  fprintf(fp, "</Grid>\n</Domain>\n</Xdmf>\n");
+  PetscCheck(fclose(fp) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Error writing '%s'", path);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode IndOutputCreate(IndMesh mesh, IndDisc disc, IndOutput *out)
+{
+  IndOutput o;
+  MPI_Comm  comm = PetscObjectComm((PetscObject)mesh->dm);
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscCalloc1(1, &o));
+  o->mesh    = mesh;
+  o->disc    = disc;
+  o->enabled = PETSC_TRUE;
+  PetscCall(PetscStrncpy(o->dir, "output", sizeof(o->dir)));
+  PetscOptionsBegin(comm, NULL, "Output", "Output");
+  PetscCall(PetscOptionsString("-output_dir", "Directory for indent.h5 and indent.xdmf (created if missing)", "", o->dir, o->dir, sizeof(o->dir), NULL));
+  PetscCall(PetscOptionsBool("-output_fields", "Write field output (HDF5 + XDMF)", "", o->enabled, &o->enabled, NULL));
+  PetscOptionsEnd();
+  PetscCheck(o->dir[0], comm, PETSC_ERR_ARG_WRONG, "-output_dir must not be empty");
+  PetscCall(PetscSNPrintf(o->h5name, sizeof(o->h5name), "%s/indent.h5", o->dir));
+  PetscCall(CreateStratumDM(mesh->dm, PETSC_FALSE, 3, &o->vdm));
+  PetscCall(CreateStratumDM(mesh->dm, PETSC_TRUE, 6, &o->c6dm));
+  PetscCall(CreateStratumDM(mesh->dm, PETSC_TRUE, 1, &o->c1dm));
+  PetscCall(DMCreateLocalVector(disc->dm, &o->Uloc));
+  PetscCall(DMCreateLocalVector(o->vdm, &o->vloc));
+  PetscCall(DMCreateGlobalVector(o->vdm, &o->disp));
+  PetscCall(DMCreateGlobalVector(o->c6dm, &o->stress));
+  PetscCall(DMCreateGlobalVector(o->c6dm, &o->strain));
+  PetscCall(DMCreateGlobalVector(o->c1dm, &o->vonmises));
+  PetscCall(PetscObjectSetName((PetscObject)o->disp, "displacement"));
+  PetscCall(PetscObjectSetName((PetscObject)o->stress, "stress"));
+  PetscCall(PetscObjectSetName((PetscObject)o->strain, "strain"));
+  PetscCall(PetscObjectSetName((PetscObject)o->vonmises, "von_mises"));
+  PetscCall(PetscMalloc3(disc->ncell * 6, &o->cstress, disc->ncell * 6, &o->cstrain, IND_MAX_OUTPUT_STEPS, &o->times));
+  *out = o;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode IndOutputWriteStep(IndOutput o, PetscReal time, Vec U, IndAssembly assembly)
+{
+  PetscSection       us;
+  const PetscScalar *u;
+  PetscScalar       *s, *e, *vm;
+
+  PetscFunctionBeginUser;
+  if (!o->enabled) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCheck(o->nsteps < IND_MAX_OUTPUT_STEPS, PetscObjectComm((PetscObject)U), PETSC_ERR_SUP, "More than %d output steps", IND_MAX_OUTPUT_STEPS);
+  PetscCall(PetscLogStagePush(IndLog.output));
+  PetscCall(PetscLogEventBegin(IndLog.output_write, 0, 0, 0, 0));
+  if (!o->viewer) PetscCall(OpenFile(o));
+  PetscCall(DMGlobalToLocal(o->disc->dm, U, INSERT_VALUES, o->Uloc));
+  PetscCall(DMGetLocalSection(o->disc->dm, &us));
+  PetscCall(VecGetArrayRead(o->Uloc, &u));
+  PetscCall(GatherVertexValues(o, us, u, o->disp));
+  PetscCall(VecRestoreArrayRead(o->Uloc, &u));
+
+  /* Cells are not shared (no overlap), so local cell i is the i-th owned entry. */
+  PetscCall(IndAssemblyCellAverages(assembly, o->Uloc, o->cstress, o->cstrain));
+  PetscCall(VecGetArray(o->stress, &s));
+  PetscCall(VecGetArray(o->strain, &e));
+  PetscCall(VecGetArray(o->vonmises, &vm));
+  for (PetscInt i = 0; i < o->disc->ncell; ++i) {
+    for (int k = 0; k < 6; ++k) {
+      s[6 * i + k] = o->cstress[6 * i + k];
+      e[6 * i + k] = o->cstrain[6 * i + k];
+    }
+    vm[i] = IndVonMises(o->cstress + 6 * i);
+  }
+  PetscCall(VecRestoreArray(o->stress, &s));
+  PetscCall(VecRestoreArray(o->strain, &e));
+  PetscCall(VecRestoreArray(o->vonmises, &vm));
+
+  PetscCall(PetscViewerHDF5SetTimestep(o->viewer, o->nsteps));
+  PetscCall(PetscViewerHDF5PushGroup(o->viewer, "/fields"));
+  PetscCall(VecView(o->disp, o->viewer));
+  PetscCall(VecView(o->stress, o->viewer));
+  PetscCall(VecView(o->strain, o->viewer));
+  PetscCall(VecView(o->vonmises, o->viewer));
+  PetscCall(PetscViewerHDF5PopGroup(o->viewer));
+  PetscCall(PetscViewerFlush(o->viewer));
+  o->times[o->nsteps++] = time;
+  PetscCall(WriteXdmf(o));
+  PetscCall(PetscLogEventEnd(IndLog.output_write, 0, 0, 0, 0));
+  PetscCall(PetscLogStagePop());
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode IndOutputDestroy(IndOutput *o)
+{
+  PetscFunctionBeginUser;
+  if (!*o) PetscFunctionReturn(PETSC_SUCCESS);
+  if ((*o)->viewer) PetscCall(PetscViewerHDF5PopTimestepping((*o)->viewer));
+  PetscCall(PetscViewerDestroy(&(*o)->viewer));
+  PetscCall(VecDestroy(&(*o)->Uloc));
+  PetscCall(VecDestroy(&(*o)->vloc));
+  PetscCall(VecDestroy(&(*o)->disp));
+  PetscCall(VecDestroy(&(*o)->stress));
+  PetscCall(VecDestroy(&(*o)->strain));
+  PetscCall(VecDestroy(&(*o)->vonmises));
+  PetscCall(DMDestroy(&(*o)->vdm));
+  PetscCall(DMDestroy(&(*o)->c6dm));
+  PetscCall(DMDestroy(&(*o)->c1dm));
+  PetscCall(PetscFree3((*o)->cstress, (*o)->cstrain, (*o)->times));
+  PetscCall(PetscFree(*o));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}

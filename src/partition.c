@@ -1,0 +1,79 @@
+#include "ind_mesh.h"
+#if defined(INDENT_HAVE_METIS)
+  #include <metis.h>
+#endif
+
+#if defined(INDENT_HAVE_METIS)
+/* The mesh is still serial here (read on rank 0), so METIS runs on rank 0 and hands its answer to
+   PETSc's shell partitioner; Debian's PETSc has no ParMETIS. */
+static PetscErrorCode SetMetisPartition(DM dm, PetscPartitioner part)
+{
+  MPI_Comm    comm = PetscObjectComm((PetscObject)dm);
+  PetscMPIInt size;
+  PetscInt    nv, *offsets = NULL, *adjacency = NULL, *sizes, *points;
+  IS          numbering;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_size(comm, &size));
+  PetscCall(DMPlexCreatePartitionerGraph(dm, 0, &nv, &offsets, &adjacency, &numbering));
+  PetscCall(PetscCalloc1(size, &sizes));
+  PetscCall(PetscMalloc1(nv, &points));
+  if (nv > 0) {
+    idx_t  n = (idx_t)nv, ncon = 1, nparts = (idx_t)size, objval, *xadj, *adj, *where, opts[METIS_NOPTIONS];
+    PetscInt *fill;
+    PetscCall(PetscMalloc4(nv + 1, &xadj, offsets[nv], &adj, nv, &where, size, &fill));
+    for (PetscInt i = 0; i <= nv; ++i) xadj[i] = (idx_t)offsets[i];
+    for (PetscInt i = 0; i < offsets[nv]; ++i) adj[i] = (idx_t)adjacency[i];
+    METIS_SetDefaultOptions(opts);
+    opts[METIS_OPTION_SEED]    = 1; /* same partition every run */
+    opts[METIS_OPTION_NUMBERING] = 0;
+    if (size > 1) {
+      int status = METIS_PartGraphKway(&n, &ncon, xadj, adj, NULL, NULL, NULL, &nparts, NULL, NULL, opts, &objval, where);
+      PetscCheck(status == METIS_OK, PETSC_COMM_SELF, PETSC_ERR_LIB, "METIS_PartGraphKway failed with status %d", status);
+    } else
+      for (PetscInt i = 0; i < nv; ++i) where[i] = 0;
+    for (PetscInt i = 0; i < nv; ++i) sizes[where[i]]++;
+    fill[0] = 0;
+    for (PetscMPIInt r = 1; r < size; ++r) fill[r] = fill[r - 1] + sizes[r - 1];
+    for (PetscInt i = 0; i < nv; ++i) points[fill[where[i]]++] = i;
+    PetscCall(PetscFree4(xadj, adj, where, fill));
+  }
+  PetscCall(PetscPartitionerSetType(part, PETSCPARTITIONERSHELL));
+  PetscCall(PetscPartitionerShellSetPartition(part, size, sizes, points));
+  PetscCall(PetscFree(sizes));
+  PetscCall(PetscFree(points));
+  PetscCall(PetscFree(offsets));
+  PetscCall(PetscFree(adjacency));
+  PetscCall(ISDestroy(&numbering));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+#endif
+
+PetscErrorCode IndMeshSetPartitioner(DM dm)
+{
+  MPI_Comm         comm = PetscObjectComm((PetscObject)dm);
+  PetscPartitioner part;
+  const char      *types[] = {"ptscotch", "metis", "simple"};
+  PetscInt         choice  = 0;
+
+  PetscFunctionBeginUser;
+  PetscOptionsBegin(comm, NULL, "Partitioning", "Mesh");
+  PetscCall(PetscOptionsEList("-mesh_partitioner", "Mesh partitioner", "", types, 3, types[choice], &choice, NULL));
+  PetscOptionsEnd();
+  PetscCall(DMPlexGetPartitioner(dm, &part));
+  switch (choice) {
+  case 0:
+    PetscCall(PetscPartitionerSetType(part, PETSCPARTITIONERPTSCOTCH));
+    break;
+  case 1:
+#if defined(INDENT_HAVE_METIS)
+    PetscCall(SetMetisPartition(dm, part));
+#else
+    SETERRQ(comm, PETSC_ERR_SUP, "-mesh_partitioner metis: this indent was built without METIS (install libmetis-dev and reconfigure)");
+#endif
+    break;
+  default:
+    PetscCall(PetscPartitionerSetType(part, PETSCPARTITIONERSIMPLE));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}

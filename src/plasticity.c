@@ -1,0 +1,127 @@
+#include <math.h>
+#include "ind_plasticity.h"
+
+const char *const IndHardeningTypes[] = {"voce", "linear", "IndHardening", "IND_HARDENING_", NULL};
+
+PetscReal IndPlasticR(const IndPlasticParams *m, PetscReal p)
+{
+  if (m->hardening == IND_HARDENING_LINEAR) return m->R0 + m->h * p;
+  return m->Rs - (m->Rs - m->R0) * PetscExpReal(-m->gamma * p);
+}
+
+PetscReal IndPlasticdR(const IndPlasticParams *m, PetscReal p)
+{
+  if (m->hardening == IND_HARDENING_LINEAR) return m->h;
+  return m->gamma * (m->Rs - m->R0) * PetscExpReal(-m->gamma * p);
+}
+
+PetscErrorCode IndPlasticParamsCheck(const IndPlasticParams *m, const char prefix[], MPI_Comm comm)
+{
+  const char *pre = prefix ? prefix : "";
+
+  PetscFunctionBeginUser;
+  PetscCheck(m->mu > 0 && m->kappa > 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "Elastic moduli must be > 0, got mu = %g, kappa = %g GPa: check -%syoung and -%spoisson", (double)m->mu, (double)m->kappa, pre, pre);
+  if (m->elastic_only) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCheck(m->R0 > 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-%syield must be > 0 (GPa), got %g", pre, (double)m->R0);
+  PetscCheck(m->H >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-%skinematic must be >= 0 (GPa), got %g", pre, (double)m->H);
+  PetscCheck(m->max_iterations >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "Iteration cap of the plastic return must be >= 0 (0: default), got %" PetscInt_FMT, m->max_iterations);
+  switch (m->hardening) {
+  case IND_HARDENING_VOCE:
+    PetscCheck(m->Rs > 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-%ssaturation must be > 0 (GPa), got %g", pre, (double)m->Rs);
+    PetscCheck(m->gamma >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-%svoce_rate must be >= 0, got %g", pre, (double)m->gamma);
+    /* Softening (Rs < R0) is allowed while the return equation stays strictly decreasing in dp,
+       which keeps its root unique and the tangent finite. */
+    PetscCheck(m->gamma * (m->R0 - m->Rs) < 3.0 * m->mu + m->H, comm, PETSC_ERR_ARG_OUTOFRANGE,
+               "Voce softening too steep: -%svoce_rate * (-%syield - -%ssaturation) = %g GPa must be < 3 mu + H = %g GPa", pre, pre, pre, (double)(m->gamma * (m->R0 - m->Rs)), (double)(3.0 * m->mu + m->H));
+    break;
+  case IND_HARDENING_LINEAR:
+    PetscCheck(m->h >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-%shardening_slope must be >= 0 (GPa), got %g", pre, (double)m->h);
+    break;
+  default:
+    SETERRQ(comm, PETSC_ERR_ARG_OUTOFRANGE, "Unknown hardening law %d for region prefix '%s'", (int)m->hardening, pre);
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Solves r(dp) = qE - (3 mu + H) dp - R(p + dp) = 0 for dp > 0, given r(0) > 0.
+   r(qE / (3 mu + H)) = -R < 0 since R > 0, so [0, qE / (3 mu + H)] brackets the root for any law
+   IndPlasticParamsCheck accepts. Newton from 0 converges monotonically for hardening; bisection
+   takes over whenever a Newton step would leave the bracket (steep softening). */
+static IndPlasticStatus SolveReturn(const IndPlasticParams *m, PetscReal qE, PetscReal p, PetscReal *dp_out)
+{
+  const PetscInt  maxit = m->max_iterations > 0 ? m->max_iterations : 100;
+  const PetscReal c = 3.0 * m->mu + m->H, tol = 1e-15 * qE;
+  /* r is evaluated with an absolute round-off of a few ulps of qE, so dp cannot be known better than
+     a few ulps of its bound qE / c; a step below that ends the iteration even when |r| > tol. */
+  const PetscReal ddp_min = 4.0 * PETSC_MACHINE_EPSILON * qE / c;
+  PetscReal       lo = 0.0, hi = qE / c, dp = 0.0, r = qE - IndPlasticR(m, p);
+
+  for (PetscInt it = 0; it < maxit; ++it) {
+    PetscReal next = dp + r / (c + IndPlasticdR(m, p + dp));
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi); /* also catches a NaN step */
+    const PetscBool stalled = PetscAbsReal(next - dp) <= ddp_min ? PETSC_TRUE : PETSC_FALSE;
+    dp = next;
+    r  = qE - c * dp - IndPlasticR(m, p + dp);
+    if (PetscAbsReal(r) <= tol || stalled) {
+      *dp_out = dp;
+      return IND_PLASTIC_OK;
+    }
+    if (r > 0) lo = dp;
+    else hi = dp;
+  }
+  return IND_PLASTIC_NOT_CONVERGED;
+}
+
+IndPlasticStatus IndPlasticUpdate(const IndPlasticParams *m, const PetscReal eps[6], const IndPlasticState *old, IndPlasticState *new_state, PetscReal sigma[6], PetscReal D[36], PetscReal *dp_out)
+{
+  const IndPlasticState o  = *old; /* new_state may alias old */
+  const PetscReal       mu = m->mu, H = m->H, tr = eps[0] + eps[1] + eps[2], s32 = PetscSqrtReal(1.5);
+  PetscReal             ee[6], eta[6], n[6] = {0, 0, 0, 0, 0, 0}, nrm2 = 0.0, qE, dp = 0.0, theta = 1.0, thetabar = 0.0;
+
+  /* ee: elastic strain deviator, tensor components (halve the engineering shears). */
+  for (int i = 0; i < 3; ++i) ee[i] = eps[i] - tr / 3.0 - o.eps_p[i];
+  for (int i = 3; i < 6; ++i) ee[i] = 0.5 * (eps[i] - o.eps_p[i]);
+  for (int i = 0; i < 6; ++i) {
+    eta[i] = 2.0 * mu * ee[i] - o.x[i];
+    nrm2 += (i < 3 ? 1.0 : 2.0) * eta[i] * eta[i]; /* off-diagonal terms appear twice in the tensor */
+  }
+  qE         = s32 * PetscSqrtReal(nrm2);
+  *new_state = o;
+
+  if (!m->elastic_only && qE - IndPlasticR(m, o.p) > 1e-12 * m->R0) {
+    const PetscReal nrm = PetscSqrtReal(nrm2);
+
+    if (SolveReturn(m, qE, o.p, &dp) != IND_PLASTIC_OK) {
+      for (int i = 0; i < 6; ++i) sigma[i] = NAN;
+      if (D)
+        for (int i = 0; i < 36; ++i) D[i] = NAN;
+      if (dp_out) *dp_out = NAN;
+      return IND_PLASTIC_NOT_CONVERGED;
+    }
+    for (int i = 0; i < 6; ++i) {
+      const PetscReal deps_p = s32 * dp * eta[i] / nrm; /* tensor component */
+
+      n[i] = eta[i] / nrm;
+      ee[i] -= deps_p;
+      new_state->eps_p[i] += (i < 3 ? 1.0 : 2.0) * deps_p;
+      new_state->x[i] += 2.0 / 3.0 * H * deps_p;
+    }
+    new_state->p += dp;
+    theta    = 1.0 - 3.0 * mu * dp / qE;
+    thetabar = 3.0 * mu / (3.0 * mu + H + IndPlasticdR(m, new_state->p)) - 3.0 * mu * dp / qE;
+  }
+  for (int i = 0; i < 6; ++i) sigma[i] = (i < 3 ? m->kappa * tr : 0.0) + 2.0 * mu * ee[i];
+  if (D) {
+    /* kappa J + 2 mu theta (I - J/3) - 2 mu thetabar n n^T, I = diag(1,1,1,1/2,1/2,1/2) because the
+       tangent acts on engineering shears. */
+    for (int i = 0; i < 6; ++i)
+      for (int j = 0; j < 6; ++j) {
+        PetscReal v = -2.0 * mu * thetabar * n[i] * n[j];
+        if (i < 3 && j < 3) v += m->kappa - 2.0 * mu * theta / 3.0;
+        if (i == j) v += 2.0 * mu * theta * (i < 3 ? 1.0 : 0.5);
+        D[6 * i + j] = v;
+      }
+  }
+  if (dp_out) *dp_out = dp;
+  return IND_PLASTIC_OK;
+}

@@ -1,0 +1,88 @@
+#include "ind_solver.h"
+
+static PetscErrorCode FormResidual(SNES snes, Vec U, Vec F, void *ctx)
+{
+  IndSolver s = (IndSolver)ctx;
+
+  PetscFunctionBeginUser;
+  (void)snes;
+  PetscCall(DMGlobalToLocal(s->dm, U, INSERT_VALUES, s->Uloc));
+  PetscCall(IndAssemblyResidual(s->assembly, s->Uloc, s->Floc));
+  PetscCall(VecZeroEntries(F));
+  PetscCall(DMLocalToGlobal(s->dm, s->Floc, ADD_VALUES, F));
+  PetscCall(IndBCApplyResidual(s->bc, s->load_factor, U, F));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode FormJacobian(SNES snes, Vec U, Mat A, Mat P, void *ctx)
+{
+  IndSolver s = (IndSolver)ctx;
+
+  PetscFunctionBeginUser;
+  (void)snes;
+  PetscCall(DMGlobalToLocal(s->dm, U, INSERT_VALUES, s->Uloc));
+  PetscCall(IndAssemblyJacobian(s->assembly, s->Uloc, P));
+  PetscCall(IndBCApplyJacobian(s->bc, P));
+  if (A != P) {
+    PetscCall(MatAssemblyBegin(A, MAT_FINAL_ASSEMBLY));
+    PetscCall(MatAssemblyEnd(A, MAT_FINAL_ASSEMBLY));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode IndSolverCreate(DM dm, IndAssembly assembly, IndBC bc, IndSolver *out)
+{
+  IndSolver    s;
+  KSP          ksp;
+  PC           pc;
+  MatNullSpace rigid;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscCalloc1(1, &s));
+  s->dm       = dm;
+  s->assembly = assembly;
+  s->bc       = bc;
+  PetscCall(DMCreateLocalVector(dm, &s->Uloc));
+  PetscCall(DMCreateLocalVector(dm, &s->Floc));
+  PetscCall(IndAssemblyCreateMatrix(assembly, &s->J));
+  PetscCall(DMPlexCreateRigidBody(dm, 0, &rigid));
+  PetscCall(MatSetNearNullSpace(s->J, rigid));
+  PetscCall(MatNullSpaceDestroy(&rigid));
+
+  PetscCall(SNESCreate(PetscObjectComm((PetscObject)dm), &s->snes));
+  PetscCall(SNESSetFunction(s->snes, NULL, FormResidual, s));
+  PetscCall(SNESSetJacobian(s->snes, s->J, s->J, FormJacobian, s));
+  PetscCall(SNESGetKSP(s->snes, &ksp));
+  PetscCall(KSPSetType(ksp, KSPCG));
+  PetscCall(KSPSetTolerances(ksp, 1e-8, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT));
+  PetscCall(KSPGetPC(ksp, &pc));
+  PetscCall(PCSetType(pc, PCGAMG));
+  PetscCall(SNESSetFromOptions(s->snes));
+  *out = s;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode IndSolverSolve(IndSolver s, PetscReal load_factor, Vec U, SNESConvergedReason *reason)
+{
+  PetscFunctionBeginUser;
+  s->load_factor = load_factor;
+  PetscCall(IndBCSetUp(s->bc));
+  /* Starting on the prescribed values makes the Newton correction vanish on constrained rows, which
+     is what zeroing their columns in the Jacobian assumes. */
+  PetscCall(IndBCApplySolution(s->bc, load_factor, U));
+  PetscCall(SNESSolve(s->snes, NULL, U));
+  PetscCall(SNESGetConvergedReason(s->snes, reason));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode IndSolverDestroy(IndSolver *s)
+{
+  PetscFunctionBeginUser;
+  if (!*s) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(SNESDestroy(&(*s)->snes));
+  PetscCall(MatDestroy(&(*s)->J));
+  PetscCall(VecDestroy(&(*s)->Uloc));
+  PetscCall(VecDestroy(&(*s)->Floc));
+  PetscCall(PetscFree(*s));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
