@@ -169,7 +169,7 @@ static inline uint64_t SplitMix64(uint64_t z)
 }
 
 /* Moves interior vertices by up to frac * (shortest edge) in a direction hashed from the vertex's
-   own coordinates, so the distorted mesh is the same on any number of ranks. */
+   own coordinates, so the distorted mesh does not depend on the numbering. */
 static PetscErrorCode PerturbInteriorVertices(IndMesh mesh, PetscReal frac)
 {
   DM           dm = mesh->dm, cdm;
@@ -177,7 +177,7 @@ static PetscErrorCode PerturbInteriorVertices(IndMesh mesh, PetscReal frac)
   Vec          X;
   PetscScalar *x;
   PetscSection cs;
-  PetscInt     vStart, vEnd, eStart, eEnd;
+  PetscInt     vStart, vEnd, eStart, eEnd, csStart, csEnd;
   PetscReal    hmin = PETSC_MAX_REAL;
 
   PetscFunctionBeginUser;
@@ -185,7 +185,8 @@ static PetscErrorCode PerturbInteriorVertices(IndMesh mesh, PetscReal frac)
   PetscCall(DMGetLocalSection(cdm, &cs));
   PetscCall(DMPlexGetDepthStratum(dm, 0, &vStart, &vEnd));
   PetscCall(DMPlexGetDepthStratum(dm, 1, &eStart, &eEnd));
-  for (PetscInt e = eStart; e < eEnd; ++e) {
+  PetscCall(PetscSectionGetChart(cs, &csStart, &csEnd));
+  for (PetscInt e = PetscMax(eStart, csStart); e < PetscMin(eEnd, csEnd); ++e) {
     PetscInt dof;
     PetscCall(PetscSectionGetDof(cs, e, &dof));
     PetscCheck(dof == 0, PETSC_COMM_SELF, PETSC_ERR_SUP, "-mesh_perturb supports only straight-sided (first-order) meshes");
@@ -237,7 +238,7 @@ PetscErrorCode IndMeshCreate(MPI_Comm comm, IndMesh *out)
   PetscOptionsBegin(comm, NULL, "Mesh options", "Mesh");
   PetscCall(PetscOptionsString("-mesh_file", "gmsh mesh (.msh, format 2.2 or 4.1); the built-in box mesh is used without it", "", file, file, sizeof(file), &has_file));
   PetscCall(PetscOptionsInt("-mesh_refine", "Uniform refinements after distribution", "", refine, &refine, NULL));
-  PetscCall(PetscOptionsReal("-mesh_perturb", "Random displacement of interior vertices, as a fraction of the shortest edge (tests)", "", perturb, &perturb, NULL));
+  PetscCall(PetscOptionsReal("-mesh_perturb", "Random displacement of interior vertices of the mesh as read, as a fraction of its shortest edge (tests)", "", perturb, &perturb, NULL));
   PetscOptionsEnd();
   PetscCheck(refine >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-mesh_refine must be >= 0, got %" PetscInt_FMT, refine);
   PetscCheck(perturb >= 0 && perturb < 0.5, comm, PETSC_ERR_ARG_OUTOFRANGE, "-mesh_perturb must lie in [0, 0.5), got %g", (double)perturb);
@@ -253,6 +254,8 @@ PetscErrorCode IndMeshCreate(MPI_Comm comm, IndMesh *out)
   } else PetscCall(CreateBoxMesh(comm, mesh));
   PetscCall(PetscObjectSetName((PetscObject)mesh->dm, "mesh"));
   PetscCall(CheckCellTypes(comm, mesh));
+  /* On the serial mesh, where every boundary face is plainly one, so any rank count gets the same mesh. */
+  if (perturb > 0) PetscCall(PerturbInteriorVertices(mesh, perturb));
   PetscCall(PetscLogEventEnd(IndLog.mesh_create, 0, 0, 0, 0));
 
   PetscCall(PetscLogEventBegin(IndLog.mesh_distribute, 0, 0, 0, 0));
@@ -273,7 +276,6 @@ PetscErrorCode IndMeshCreate(MPI_Comm comm, IndMesh *out)
   }
   PetscCall(PetscObjectSetName((PetscObject)mesh->dm, "mesh"));
   PetscCall(PetscLogEventEnd(IndLog.mesh_distribute, 0, 0, 0, 0));
-  if (perturb > 0) PetscCall(PerturbInteriorVertices(mesh, perturb));
   PetscCall(DMViewFromOptions(mesh->dm, NULL, "-mesh_view"));
   *out = mesh;
   PetscFunctionReturn(PETSC_SUCCESS);

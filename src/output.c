@@ -1,3 +1,7 @@
+#include <errno.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 #include <petscsf.h>
 #include "ind_output.h"
 #include "ind_elasticity.h"
@@ -105,10 +109,34 @@ static PetscErrorCode WriteProvenance(IndOutput o)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* mkdir -p on rank 0, checked before any solve so that a bad -output_dir costs nothing. */
+static PetscErrorCode MakeOutputDir(MPI_Comm comm, const char dir[])
+{
+  PetscMPIInt rank;
+  int         err = 0;
+  char        path[PETSC_MAX_PATH_LEN];
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  if (rank == 0) {
+    PetscCall(PetscStrncpy(path, dir, sizeof(path)));
+    for (char *p = path + 1; *p && !err; ++p)
+      if (*p == '/') {
+        *p = 0;
+        if (mkdir(path, 0777) && errno != EEXIST) err = errno;
+        *p = '/';
+      }
+    if (!err && mkdir(path, 0777) && errno != EEXIST) err = errno;
+    if (!err && access(path, W_OK)) err = errno;
+  }
+  PetscCallMPI(MPI_Bcast(&err, 1, MPI_INT, 0, comm));
+  PetscCheck(!err, comm, PETSC_ERR_FILE_OPEN, "Cannot create or write to the output directory '%s' (-output_dir): %s", dir, strerror(err));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscErrorCode OpenFile(IndOutput o)
 {
   MPI_Comm     comm = PetscObjectComm((PetscObject)o->vdm);
-  PetscMPIInt  rank;
   DM           cdm;
   Vec          X, coords, plain;
   PetscSection cs;
@@ -117,9 +145,6 @@ static PetscErrorCode OpenFile(IndOutput o)
   PetscInt     n;
 
   PetscFunctionBeginUser;
-  PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  if (rank == 0) PetscCall(PetscMkdir(o->dir));
-  PetscCallMPI(MPI_Barrier(comm));
   PetscCall(PetscViewerHDF5Open(comm, o->h5name, FILE_MODE_WRITE, &o->viewer));
   PetscCall(PetscViewerHDF5SetBaseDimension2(o->viewer, PETSC_TRUE));
   PetscCall(WriteProvenance(o));
@@ -218,6 +243,7 @@ PetscErrorCode IndOutputCreate(IndMesh mesh, IndDisc disc, IndOutput *out)
   PetscOptionsEnd();
   PetscCheck(o->dir[0], comm, PETSC_ERR_ARG_WRONG, "-output_dir must not be empty");
   PetscCall(PetscSNPrintf(o->h5name, sizeof(o->h5name), "%s/indent.h5", o->dir));
+  if (o->enabled) PetscCall(MakeOutputDir(comm, o->dir));
   PetscCall(CreateStratumDM(mesh->dm, PETSC_FALSE, 3, &o->vdm));
   PetscCall(CreateStratumDM(mesh->dm, PETSC_TRUE, 6, &o->c6dm));
   PetscCall(CreateStratumDM(mesh->dm, PETSC_TRUE, 1, &o->c1dm));

@@ -1,0 +1,3 @@
+# Sourced by the run scripts: lets Open MPI run as root and oversubscribe small machines.
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
+export HWLOC_HIDE_ERRORS=2 OPENBLAS_NUM_THREADS=1 OMP_NUM_THREADS=1

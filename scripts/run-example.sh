@@ -1,0 +1,10 @@
+#!/usr/bin/env bash
+# Sets up (Debian packages, build) and runs the default example on 2 ranks.
+set -euo pipefail
+top=$(cd "$(dirname "$0")/.." && pwd)
+"$top/scripts/install-deps.sh"
+"$top/scripts/build.sh"
+. "$top/scripts/mpi-env.sh"
+cd "$top"
+mpiexec -n 2 "${BUILD_DIR:-$top/build}/indent" -options_file inputs/elastic_block.opts "$@"
+echo "Output: $top/output/elastic_block/indent.xdmf (open in ParaView) and indent.h5"

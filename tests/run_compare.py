@@ -1,0 +1,57 @@
+#!/usr/bin/env python3
+"""Run indent on several rank counts and compare the HDF5 outputs with scripts/h5compare.py.
+
+  run_compare.py --mpiexec M --indent BIN --workdir D --np 1,2,3 [--reference REF.h5]
+                 [--field NAME:ATOL:RTOL ...] -- <indent options>
+
+Without --reference the first rank count is the reference for the others (parallel consistency);
+with it, every run is compared against the committed file (regression). Exit 0 when all agree.
+"""
+import argparse
+import os
+import subprocess
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+H5COMPARE = os.path.join(HERE, "..", "scripts", "h5compare.py")
+
+
+def main():
+    argv = sys.argv[1:]
+    if "--" not in argv:
+        sys.exit("run_compare.py: indent options must follow --")
+    split = argv.index("--")
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--mpiexec", required=True)
+    ap.add_argument("--indent", required=True)
+    ap.add_argument("--workdir", required=True)
+    ap.add_argument("--np", default="1,2,3")
+    ap.add_argument("--reference")
+    ap.add_argument("--field", action="append", default=[])
+    args = ap.parse_args(argv[:split])
+    options = argv[split + 1:]
+
+    outputs = []
+    for np_ in [int(n) for n in args.np.split(",")]:
+        out = os.path.join(args.workdir, f"np{np_}")
+        cmd = [args.mpiexec, "-n", str(np_), args.indent, *options, "-output_dir", out, "-options_left"]
+        print("+", " ".join(cmd), flush=True)
+        run = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+        print(run.stdout, end="")
+        if run.returncode != 0 or "WARNING! There are" in run.stdout:
+            print(f"FAIL: indent on {np_} ranks exited with {run.returncode}")
+            return 1
+        outputs.append((np_, os.path.join(out, "indent.h5")))
+
+    failed = 0
+    pairs = [(o, args.reference) for o in outputs] if args.reference else [(o, outputs[0][1]) for o in outputs[1:]]
+    for (np_, path), ref in pairs:
+        print(f"compare {np_} ranks against {'reference' if args.reference else f'{outputs[0][0]} rank(s)'}:", flush=True)
+        cmd = [sys.executable, H5COMPARE, path, ref] + [a for f in args.field for a in ("--field", f)]
+        failed += subprocess.run(cmd).returncode != 0
+    print("all runs agree" if not failed else f"FAIL: {failed} comparison(s) differ")
+    return 1 if failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
