@@ -4,7 +4,7 @@
 set -euo pipefail
 
 packages=(
-  build-essential cmake pkg-config git
+  build-essential cmake pkg-config git time
   petsc-dev libhdf5-openmpi-dev openmpi-bin libopenmpi-dev libmetis-dev
   libopenblas0-serial gmsh
   python3 python3-numpy python3-h5py python3-matplotlib

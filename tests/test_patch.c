@@ -1,4 +1,7 @@
-static const char help[] = "Patch test: an affine displacement prescribed on the whole boundary is reproduced inside.\n";
+static const char help[] = "Patch test: an affine displacement prescribed on the whole boundary is reproduced inside.\n"
+                           "  -patch_uniaxial e  instead, take the boundary conditions from the options (symmetry or roller\n"
+                           "                     planes at x = y = z = 0, top pushed down by e at z = 1) and check the\n"
+                           "                     uniform uniaxial-stress field u = (nu e x, nu e y, -e z)\n";
 
 #include "ind_app.h"
 
@@ -6,10 +9,20 @@ static const char help[] = "Patch test: an affine displacement prescribed on the
 static const PetscReal A[3][3] = {{1.0e-3, 2.0e-3, -1.5e-3}, {-0.7e-3, 0.5e-3, 1.1e-3}, {0.3e-3, -1.2e-3, -0.9e-3}};
 static const PetscReal b[3]    = {0.01, -0.02, 0.005};
 
+typedef struct {
+  PetscBool uniaxial;
+  PetscReal strain, nu;
+} Case;
+
 static PetscErrorCode Affine(const PetscReal x[3], PetscReal u[3], void *ctx)
 {
-  (void)ctx;
-  for (int i = 0; i < 3; ++i) u[i] = b[i] + A[i][0] * x[0] + A[i][1] * x[1] + A[i][2] * x[2];
+  const Case *c = (const Case *)ctx;
+  if (c && c->uniaxial) {
+    u[0] = c->nu * c->strain * x[0];
+    u[1] = c->nu * c->strain * x[1];
+    u[2] = -c->strain * x[2];
+  } else
+    for (int i = 0; i < 3; ++i) u[i] = b[i] + A[i][0] * x[0] + A[i][1] * x[1] + A[i][2] * x[2];
   return PETSC_SUCCESS;
 }
 
@@ -29,17 +42,22 @@ int main(int argc, char **argv)
   IndApp    app;
   Vec       exact;
   PetscReal err, norm, tol = 1e-10;
+  Case      c = {PETSC_FALSE, 0, 0};
+  void     *ctxs[1] = {&c};
   PetscErrorCode (*funcs[1])(PetscInt, PetscReal, const PetscReal[], PetscInt, PetscScalar *, void *) = {AffineProject};
 
   PetscCall(PetscInitialize(&argc, &argv, NULL, help));
   PetscCall(PetscOptionsGetReal(NULL, NULL, "-patch_tol", &tol, NULL));
+  PetscCall(PetscOptionsGetReal(NULL, NULL, "-patch_uniaxial", &c.strain, &c.uniaxial));
   PetscCall(IndAppCreate(PETSC_COMM_WORLD, &app));
-  for (PetscInt r = 0; r < app->mesh->nregions; ++r)
-    if (app->mesh->regions[r].dim == 2) PetscCall(IndAppAddBoundaryFunction(app, app->mesh->regions[r].name, 7, Affine, NULL));
+  c.nu = app->mats->mat[0].poisson;
+  if (!c.uniaxial)
+    for (PetscInt r = 0; r < app->mesh->nregions; ++r)
+      if (app->mesh->regions[r].dim == 2) PetscCall(IndAppAddBoundaryFunction(app, app->mesh->regions[r].name, 7, Affine, &c));
   PetscCall(IndAppRun(app));
 
   PetscCall(VecDuplicate(app->U, &exact));
-  PetscCall(DMProjectFunction(app->disc->dm, 0.0, funcs, NULL, INSERT_ALL_VALUES, exact));
+  PetscCall(DMProjectFunction(app->disc->dm, 0.0, funcs, ctxs, INSERT_ALL_VALUES, exact));
   PetscCall(VecNorm(exact, NORM_INFINITY, &norm));
   PetscCall(VecAXPY(exact, -1.0, app->U));
   PetscCall(VecNorm(exact, NORM_INFINITY, &err));
