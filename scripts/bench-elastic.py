@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Benchmark: elastic Q2 block (default ~207k dofs) with the default solver (CG + GAMG) on 1 and 2 ranks.
+"""Benchmark: elastic Q2 (or Q1) block (default ~207k dofs) with the default solver (CG + GAMG) on 1 and 2 ranks.
 Prints a table of setup/solve times from -log_view stages and peak resident memory per rank.
 A measurement, not a test: it never fails on a time.
 
@@ -27,8 +27,9 @@ def main():
     extra = argv[argv.index("--") + 1:] if "--" in argv else []
     argv = argv[:argv.index("--")] if "--" in argv else argv
     ap = argparse.ArgumentParser()
-    ap.add_argument("--cells", type=int, default=20, help="hexahedra per side (Q2: 3 (2n+1)^3 dofs)")
+    ap.add_argument("--cells", type=int, default=20, help="hexahedra per side (Q2: 3 (2n+1)^3 dofs, Q1: 3 (n+1)^3)")
     ap.add_argument("--ranks", default="1,2")
+    ap.add_argument("--degree", type=int, default=2)
     ap.add_argument("--build", default=os.path.join(top, "build"))
     args = ap.parse_args(argv)
     env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
@@ -38,7 +39,7 @@ def main():
     for np_ in [int(r) for r in args.ranks.split(",")]:
         with tempfile.TemporaryDirectory() as tmp:
             cmd = ["mpiexec", "-n", str(np_), "/usr/bin/time", "-f", "maxrss_kb %M", os.path.join(args.build, "indent"),
-                   "-dm_plex_box_faces", f"{n},{n},{n}", "-disc_degree", "2", "-domain_young", "100", "-domain_poisson", "0.3",
+                   "-dm_plex_box_faces", f"{n},{n},{n}", "-disc_degree", str(args.degree), "-domain_young", "100", "-domain_poisson", "0.3",
                    "-bc_fixed", "bottom", "-bc_displacement", "top:z=-0.01", "-output_fields", "0", "-log_view", *extra]
             run = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, env=env)
             if run.returncode:

@@ -192,8 +192,8 @@ static PetscErrorCode WriteXdmf(IndOutput o)
     PetscInt    n, bs;
   } fields[] = {
     {"displacement", "Vector", "Node", o->nvert, 3},
-    {"stress", "Tensor6", "Cell", o->ncell, 6},
-    {"strain", "Tensor6", "Cell", o->ncell, 6},
+    {"stress", "Matrix", "Cell", o->ncell, 6}, /* Voigt xx,yy,zz,xy,yz,xz: not XDMF Tensor6 order */
+    {"strain", "Matrix", "Cell", o->ncell, 6},
     {"von_mises", "Scalar", "Cell", o->ncell, 1},
   };
 
