@@ -28,13 +28,40 @@ static PetscErrorCode CacheReferenceTabulation(IndDisc disc)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode CacheCells(IndDisc disc, PetscQuadrature quad)
+/* Values (nq x nn) of the scalar Lagrange basis of the coordinate field: degree 1, or 2 for
+   second-order gmsh meshes, chosen by the number nn of coordinate nodes per cell. */
+static PetscErrorCode CoordinateBasis(PetscBool simplex, PetscQuadrature quad, PetscInt nq, PetscInt nn, PetscReal **Nx)
+{
+  PetscFunctionBeginUser;
+  for (PetscInt k = 1; k <= 2; ++k) {
+    PetscFE         fe;
+    PetscTabulation T;
+    PetscInt        nb;
+    PetscCall(PetscFECreateLagrange(PETSC_COMM_SELF, 3, 1, simplex, k, PETSC_DETERMINE, &fe));
+    PetscCall(PetscFESetQuadrature(fe, quad));
+    PetscCall(PetscFEGetDimension(fe, &nb));
+    if (nb == nn) {
+      PetscCall(PetscFEGetCellTabulation(fe, 0, &T));
+      PetscCall(PetscMalloc1(nq * nn, Nx));
+      PetscCall(PetscArraycpy(*Nx, T->T[0], nq * nn));
+      PetscCall(PetscFEDestroy(&fe));
+      PetscFunctionReturn(PETSC_SUCCESS);
+    }
+    PetscCall(PetscFEDestroy(&fe));
+  }
+  SETERRQ(PETSC_COMM_SELF, PETSC_ERR_SUP, "Cells with %" PetscInt_FMT " coordinate nodes are not supported (first- or second-order meshes only)", nn);
+}
+
+static PetscErrorCode CacheCells(IndDisc disc, PetscBool simplex, PetscQuadrature quad)
 {
   DM                     dm = disc->dm;
   PetscSection           s;
   ISLocalToGlobalMapping ltog;
-  const PetscReal       *qpoints;
-  PetscReal             *v, *J, *detJ;
+  DM                     cdm;
+  PetscSection           cs;
+  Vec                    X;
+  PetscReal             *v, *J, *detJ, *Nx = NULL;
+  PetscInt               nn = 0;
   PetscInt               cEnd;
 
   PetscFunctionBeginUser;
@@ -43,9 +70,11 @@ static PetscErrorCode CacheCells(IndDisc disc, PetscQuadrature quad)
   disc->ncell = cEnd - disc->cStart;
   PetscCall(DMGetLocalSection(dm, &s));
   PetscCall(DMGetLocalToGlobalMapping(dm, &ltog));
-  PetscCall(PetscQuadratureGetData(quad, NULL, NULL, NULL, &qpoints, NULL));
   PetscCall(PetscMalloc5(disc->ncell * disc->ndof, &disc->lidx, disc->ncell * disc->ndof, &disc->gidx, disc->ncell * disc->nq, &disc->wdetJ, disc->ncell * disc->nq * 9, &disc->invJ, disc->ncell * disc->nq * 3, &disc->xq));
   PetscCall(PetscMalloc3(disc->nq * 3, &v, disc->nq * 9, &J, disc->nq, &detJ));
+  PetscCall(DMGetCoordinateDM(dm, &cdm));
+  PetscCall(DMGetLocalSection(cdm, &cs));
+  PetscCall(DMGetCoordinatesLocal(dm, &X));
   for (PetscInt i = 0; i < disc->ncell; ++i) {
     PetscInt  c = disc->cStart + i, n, *idx = NULL;
     PetscReal *iJ = disc->invJ + i * disc->nq * 9;
@@ -67,8 +96,27 @@ static PetscErrorCode CacheCells(IndDisc disc, PetscQuadrature quad)
       PetscCheck(detJ[q] > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "Cell %" PetscInt_FMT " is inverted or degenerate (det J = %g at quadrature point %" PetscInt_FMT ")", c, (double)detJ[q], q);
       disc->wdetJ[i * disc->nq + q] = disc->w[q] * detJ[q];
     }
-    PetscCall(DMPlexReferenceToCoordinates(dm, c, disc->nq, qpoints, disc->xq + i * disc->nq * 3));
+    /* Not DMPlexReferenceToCoordinates: in PETSc 3.18 it re-sorts a mesh label on every call, which
+       made this loop quadratic in the number of cells. */
+    {
+      PetscScalar *xc = NULL;
+      PetscInt     nc;
+      PetscReal   *xq = disc->xq + i * disc->nq * 3;
+      PetscCall(DMPlexVecGetClosure(cdm, cs, X, c, &nc, &xc));
+      if (!Nx) {
+        nn = nc / 3;
+        PetscCall(CoordinateBasis(simplex, quad, disc->nq, nn, &Nx));
+      }
+      PetscCheck(nc == 3 * nn, PETSC_COMM_SELF, PETSC_ERR_SUP, "Cell %" PetscInt_FMT " has %" PetscInt_FMT " coordinate values, expected %" PetscInt_FMT, c, nc, 3 * nn);
+      for (PetscInt q = 0; q < disc->nq; ++q)
+        for (int d = 0; d < 3; ++d) {
+          xq[q * 3 + d] = 0.0;
+          for (PetscInt a = 0; a < nn; ++a) xq[q * 3 + d] += Nx[q * nn + a] * PetscRealPart(xc[3 * a + d]);
+        }
+      PetscCall(DMPlexVecRestoreClosure(cdm, cs, X, c, &nc, &xc));
+    }
   }
+  PetscCall(PetscFree(Nx));
   PetscCall(ISLocalToGlobalMappingApply(ltog, disc->ncell * disc->ndof, disc->lidx, disc->gidx));
   PetscCall(PetscFree3(v, J, detJ));
   PetscCall(PetscLogEventEnd(IndLog.geometry, 0, 0, 0, 0));
@@ -100,7 +148,7 @@ PetscErrorCode IndDiscCreate(IndMesh mesh, IndDisc *out)
   PetscCall(PetscFEGetQuadrature(disc->fe, &quad));
   PetscCall(PetscQuadratureGetData(quad, NULL, NULL, &disc->nq, NULL, &disc->w));
   PetscCall(CacheReferenceTabulation(disc));
-  PetscCall(CacheCells(disc, quad));
+  PetscCall(CacheCells(disc, mesh->simplex, quad));
   *out = disc;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
