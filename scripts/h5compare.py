@@ -13,7 +13,11 @@ import sys
 import h5py
 import numpy as np
 
-DEFAULT_FIELDS = ["displacement:1e-10:1e-8", "stress:1e-10:1e-8", "strain:1e-12:1e-8", "von_mises:1e-10:1e-8"]
+
+
+def bad_input(message):
+    print(f"h5compare: {message}", file=sys.stderr)
+    sys.exit(2)
 
 
 def matching_order(points, scale):
@@ -26,10 +30,10 @@ def load(path):
     try:
         f = h5py.File(path, "r")
     except OSError as e:
-        sys.exit(f"h5compare: cannot open '{path}': {e}")
+        bad_input(f"cannot open '{path}': {e}")
     for need in ("geometry/vertices", "topology/cells"):
         if need not in f:
-            sys.exit(f"h5compare: '{path}' has no /{need}: not an indent output file")
+            bad_input(f"'{path}' has no /{need}: not an indent output file")
     return f
 
 
@@ -37,7 +41,7 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("run")
     ap.add_argument("reference")
-    ap.add_argument("--field", action="append", help="NAME:ATOL:RTOL (repeatable); default: all fields")
+    ap.add_argument("--field", action="append", help="NAME:ATOL:RTOL (repeatable); default: every field with 1e-10:1e-8")
     ap.add_argument("--step", type=int, default=None, help="output step to compare (default: every step)")
     args = ap.parse_args()
 
@@ -69,7 +73,7 @@ def main():
             name, atol, rtol = spec.split(":")
             atol, rtol = float(atol), float(rtol)
         except ValueError:
-            sys.exit(f"h5compare: bad --field '{spec}' (want NAME:ATOL:RTOL)")
+            bad_input(f"bad --field '{spec}' (want NAME:ATOL:RTOL)")
         if f"fields/{name}" not in b or f"fields/{name}" not in a:
             print(f"FAIL {name}: missing in {'reference' if f'fields/{name}' not in b else 'run'}")
             failed += 1

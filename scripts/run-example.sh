@@ -7,4 +7,4 @@ top=$(cd "$(dirname "$0")/.." && pwd)
 . "$top/scripts/mpi-env.sh"
 cd "$top"
 mpiexec -n 2 "${BUILD_DIR:-$top/build}/indent" -options_file inputs/elastic_block.opts "$@"
-echo "Output: $top/output/elastic_block/indent.xdmf (open in ParaView) and indent.h5"
+echo "Output: indent.xdmf (open in ParaView) and indent.h5 in -output_dir (inputs/elastic_block.opts: output/elastic_block)"
