@@ -9,6 +9,7 @@ struct _p_IndDisc {
   DM               dm; /* borrowed from the mesh; carries the field and its section */
   PetscFE          fe;
   PetscInt         degree;
+  PetscBool        simplex;
   PetscInt         nq;    /* quadrature points per cell */
   PetscInt         nb;    /* scalar basis functions (nodes) per cell */
   PetscInt         ndof;  /* 3 * nb */
@@ -26,6 +27,8 @@ struct _p_IndDisc {
 
 PetscErrorCode IndDiscCreate(IndMesh mesh, IndDisc *disc);
 PetscErrorCode IndDiscDestroy(IndDisc *disc);
+/* Global vector of the position of every displacement node (for the rigid-body modes). */
+PetscErrorCode IndDiscNodeCoordinates(IndDisc disc, Vec *coords);
 
 /* Physical shape-function gradients G (nb x 3) of local cell i at quadrature point q. */
 static inline void IndDiscGradients(IndDisc disc, PetscInt i, PetscInt q, PetscReal *G)

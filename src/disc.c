@@ -148,8 +148,66 @@ PetscErrorCode IndDiscCreate(IndMesh mesh, IndDisc *out)
   PetscCall(PetscFEGetQuadrature(disc->fe, &quad));
   PetscCall(PetscQuadratureGetData(quad, NULL, NULL, &disc->nq, NULL, &disc->w));
   PetscCall(CacheReferenceTabulation(disc));
-  PetscCall(CacheCells(disc, mesh->simplex, quad));
+  disc->simplex = mesh->simplex;
+  PetscCall(CacheCells(disc, disc->simplex, quad));
   *out = disc;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode IndDiscNodeCoordinates(IndDisc disc, Vec *coords)
+{
+  DM              dm = disc->dm, cdm;
+  PetscSection    cs;
+  PetscDualSpace  sp;
+  PetscQuadrature nodes;
+  PetscReal      *ref, *Nx = NULL;
+  PetscInt        nn = 0;
+  Vec             X, loc;
+  PetscScalar    *x;
+
+  PetscFunctionBeginUser;
+  /* Each Lagrange node is the point of its evaluation functional; functional 3a is node a's. */
+  PetscCall(PetscFEGetDualSpace(disc->fe, &sp));
+  PetscCall(PetscMalloc1(disc->nb * 3, &ref));
+  for (PetscInt a = 0; a < disc->nb; ++a) {
+    PetscQuadrature  f;
+    PetscInt         np;
+    const PetscReal *pt;
+    PetscCall(PetscDualSpaceGetFunctional(sp, 3 * a, &f));
+    PetscCall(PetscQuadratureGetData(f, NULL, NULL, &np, &pt, NULL));
+    PetscCheck(np == 1, PETSC_COMM_SELF, PETSC_ERR_SUP, "Node %" PetscInt_FMT " is not a point evaluation", a);
+    for (int d = 0; d < 3; ++d) ref[3 * a + d] = pt[d];
+  }
+  PetscCall(PetscQuadratureCreate(PETSC_COMM_SELF, &nodes));
+  PetscCall(PetscQuadratureSetData(nodes, 3, 1, disc->nb, ref, NULL));
+  PetscCall(DMGetCoordinateDM(dm, &cdm));
+  PetscCall(DMGetLocalSection(cdm, &cs));
+  PetscCall(DMGetCoordinatesLocal(dm, &X));
+  PetscCall(DMCreateLocalVector(dm, &loc));
+  PetscCall(VecGetArray(loc, &x));
+  for (PetscInt i = 0; i < disc->ncell; ++i) {
+    PetscScalar    *xc = NULL;
+    PetscInt        nc;
+    const PetscInt *idx = disc->lidx + i * disc->ndof;
+    PetscCall(DMPlexVecGetClosure(cdm, cs, X, disc->cStart + i, &nc, &xc));
+    if (!Nx) {
+      nn = nc / 3;
+      PetscCall(CoordinateBasis(disc->simplex, nodes, disc->nb, nn, &Nx));
+    }
+    for (PetscInt a = 0; a < disc->nb; ++a)
+      for (int d = 0; d < 3; ++d) {
+        PetscReal v = 0.0;
+        for (PetscInt k = 0; k < nn; ++k) v += Nx[a * nn + k] * PetscRealPart(xc[3 * k + d]);
+        x[idx[3 * a + d]] = v;
+      }
+    PetscCall(DMPlexVecRestoreClosure(cdm, cs, X, disc->cStart + i, &nc, &xc));
+  }
+  PetscCall(VecRestoreArray(loc, &x));
+  PetscCall(PetscFree(Nx));
+  PetscCall(PetscQuadratureDestroy(&nodes));
+  PetscCall(DMCreateGlobalVector(dm, coords));
+  PetscCall(DMLocalToGlobal(dm, loc, INSERT_VALUES, *coords));
+  PetscCall(VecDestroy(&loc));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -17,6 +17,8 @@ PetscErrorCode IndLogRegister(void)
   PetscCall(PetscLogEventRegister("IndMeshCreate", classid, &IndLog.mesh_create));
   PetscCall(PetscLogEventRegister("IndMeshDistrib", classid, &IndLog.mesh_distribute));
   PetscCall(PetscLogEventRegister("IndGeometry", classid, &IndLog.geometry));
+  PetscCall(PetscLogEventRegister("IndPreallocate", classid, &IndLog.preallocate));
+  PetscCall(PetscLogEventRegister("IndNearNull", classid, &IndLog.near_null));
   PetscCall(PetscLogEventRegister("IndResidual", classid, &IndLog.residual));
   PetscCall(PetscLogEventRegister("IndJacobian", classid, &IndLog.jacobian));
   PetscCall(PetscLogEventRegister("IndBC", classid, &IndLog.bc));

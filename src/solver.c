@@ -44,10 +44,27 @@ PetscErrorCode IndSolverCreate(DM dm, IndAssembly assembly, IndBC bc, IndSolver 
   s->bc       = bc;
   PetscCall(DMCreateLocalVector(dm, &s->Uloc));
   PetscCall(DMCreateLocalVector(dm, &s->Floc));
+  PetscCall(PetscLogEventBegin(IndLog.preallocate, 0, 0, 0, 0));
   PetscCall(IndAssemblyCreateMatrix(assembly, &s->J));
-  PetscCall(DMPlexCreateRigidBody(dm, 0, &rigid));
-  PetscCall(MatSetNearNullSpace(s->J, rigid));
-  PetscCall(MatNullSpaceDestroy(&rigid));
+  PetscCall(PetscLogEventEnd(IndLog.preallocate, 0, 0, 0, 0));
+  PetscCall(PetscLogEventBegin(IndLog.near_null, 0, 0, 0, 0));
+  {
+    /* Our own node positions: DMPlexCreateRigidBody projects through a path that took 8.4 s of a
+       12.4 s setup at 64k cells in PETSc 3.18. */
+    Vec      nodes, blocked;
+    PetscInt n;
+    PetscCall(IndDiscNodeCoordinates(assembly->disc, &nodes));
+    PetscCall(VecGetLocalSize(nodes, &n));
+    PetscCall(VecCreateMPI(PetscObjectComm((PetscObject)dm), n, PETSC_DETERMINE, &blocked));
+    PetscCall(VecSetBlockSize(blocked, 3));
+    PetscCall(VecCopy(nodes, blocked));
+    PetscCall(MatNullSpaceCreateRigidBody(blocked, &rigid));
+    PetscCall(MatSetNearNullSpace(s->J, rigid));
+    PetscCall(MatNullSpaceDestroy(&rigid));
+    PetscCall(VecDestroy(&blocked));
+    PetscCall(VecDestroy(&nodes));
+  }
+  PetscCall(PetscLogEventEnd(IndLog.near_null, 0, 0, 0, 0));
 
   PetscCall(SNESCreate(PetscObjectComm((PetscObject)dm), &s->snes));
   PetscCall(SNESSetFunction(s->snes, NULL, FormResidual, s));

@@ -37,6 +37,16 @@ static PetscErrorCode AffineProject(PetscInt dim, PetscReal t, const PetscReal x
   return PETSC_SUCCESS;
 }
 
+static PetscErrorCode Position(PetscInt dim, PetscReal t, const PetscReal x[], PetscInt Nc, PetscScalar *u, void *ctx)
+{
+  (void)dim;
+  (void)t;
+  (void)Nc;
+  (void)ctx;
+  for (int i = 0; i < 3; ++i) u[i] = x[i];
+  return PETSC_SUCCESS;
+}
+
 int main(int argc, char **argv)
 {
   IndApp    app;
@@ -64,6 +74,22 @@ int main(int argc, char **argv)
   PetscCall(PetscPrintf(PETSC_COMM_WORLD, "patch test: max nodal error %.3e, relative %.3e (tolerance %.1e)\n", (double)err, (double)(err / norm), (double)tol));
   PetscCheck(err / norm <= tol, PETSC_COMM_WORLD, PETSC_ERR_NOT_CONVERGED, "Patch test failed: relative nodal error %.3e > %.1e", (double)(err / norm), (double)tol);
   PetscCall(VecDestroy(&exact));
+
+  { /* The node positions behind the rigid-body modes agree with PETSc's projection of x. */
+    Vec       nodes, x;
+    PetscReal nerr, nnorm;
+    PetscErrorCode (*ident[1])(PetscInt, PetscReal, const PetscReal[], PetscInt, PetscScalar *, void *) = {Position};
+    PetscCall(IndDiscNodeCoordinates(app->disc, &nodes));
+    PetscCall(VecDuplicate(nodes, &x));
+    PetscCall(DMProjectFunction(app->disc->dm, 0.0, ident, NULL, INSERT_ALL_VALUES, x));
+    PetscCall(VecNorm(x, NORM_INFINITY, &nnorm));
+    PetscCall(VecAXPY(x, -1.0, nodes));
+    PetscCall(VecNorm(x, NORM_INFINITY, &nerr));
+    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "node coordinates: max error %.3e relative\n", (double)(nerr / nnorm)));
+    PetscCheck(nerr <= 1e-12 * nnorm, PETSC_COMM_WORLD, PETSC_ERR_PLIB, "Node coordinates differ from the projection of x by %.3e", (double)nerr);
+    PetscCall(VecDestroy(&x));
+    PetscCall(VecDestroy(&nodes));
+  }
   PetscCall(IndAppDestroy(&app));
   PetscCall(PetscFinalize());
   return 0;
