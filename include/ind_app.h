@@ -7,20 +7,42 @@
 #include "ind_bc.h"
 #include "ind_solver.h"
 #include "ind_output.h"
+#include "ind_history.h"
+#include "ind_loadpath.h"
+
+/* What one attempt at a load step did. */
+typedef struct {
+  PetscReal           t;         /* load factor aimed at */
+  PetscBool           converged; /* accepted: history committed; otherwise U and history unchanged */
+  SNESConvergedReason reason;
+  PetscInt            newton, linear;
+  PetscInt            plastic; /* yielding quadrature points at the converged state, all ranks */
+  PetscInt            failed;  /* quadrature points whose return map failed, last residual */
+  PetscLogDouble      seconds;
+} IndStepResult;
 
 typedef struct _p_IndApp *IndApp;
+typedef PetscErrorCode (*IndStepMonitor)(IndApp app, const IndStepResult *step, void *ctx);
+
 struct _p_IndApp {
   MPI_Comm     comm;
   IndMesh      mesh;
   IndDisc      disc;
   IndMaterials mats;
+  IndHistory   history;
   IndBC        bc;
   IndAssembly  assembly;
   IndSolver    solver;
   IndOutput    output;
   Vec          U;     /* displacement (nm), global */
-  PetscInt     steps; /* load steps */
+  Vec          Uprev; /* U of the last accepted step, to retry from */
+  Vec          dU;    /* increment of the last accepted step, for the predictor */
+  PetscReal    dt_last; /* its load-factor increment; 0 before the first step */
+  PetscBool    extrapolate;
+  IndLoadPath  path;
   PetscBool    quiet;
+  IndStepMonitor monitor;
+  void          *monitor_ctx;
 };
 
 PetscErrorCode IndAppCreate(MPI_Comm comm, IndApp *app);
@@ -28,5 +50,10 @@ PetscErrorCode IndAppDestroy(IndApp *app);
 /* Hooks for verification problems (manufactured solutions, patch tests), set before IndAppRun. */
 PetscErrorCode IndAppSetBodyForce(IndApp app, IndVectorFn fn, void *ctx);
 PetscErrorCode IndAppAddBoundaryFunction(IndApp app, const char surface[], PetscInt mask, IndVectorFn fn, void *ctx);
-/* Applies the load in -load_steps equal steps, writing output after each. */
+/* Called after every accepted step of IndAppRun, after its output. */
+PetscErrorCode IndAppSetStepMonitor(IndApp app, IndStepMonitor fn, void *ctx);
+/* One attempt from the current state to load factor t: on convergence the trial history is
+   committed; otherwise U is restored and nothing changes. */
+PetscErrorCode IndAppSolveStep(IndApp app, PetscReal t, IndStepResult *step);
+/* Applies the load from 0 to 1 in adaptive steps (-load_steps and friends), writing output after each. */
 PetscErrorCode IndAppRun(IndApp app);

@@ -1,28 +1,46 @@
 #pragma once
 /* The project's own cell loop: residual B^T sigma and Jacobian B^T D B over cached quadrature data.
-   This is where the constitutive update of each quadrature point is called. */
+   This is where the constitutive update of each quadrature point is called: from the committed
+   history and the current strain, writing the trial history during residual evaluations. */
 #include <petscmat.h>
 #include "ind_disc.h"
 #include "ind_material.h"
+#include "ind_history.h"
 
 /* A vector field of position, e.g. a body force (nN/nm^3) or a boundary displacement (nm). */
 typedef PetscErrorCode (*IndVectorFn)(const PetscReal x[3], PetscReal v[3], void *ctx);
+
+typedef enum { IND_TANGENT_CONSISTENT, IND_TANGENT_ELASTIC } IndTangent;
+extern const char *const IndTangentTypes[];
 
 typedef struct _p_IndAssembly *IndAssembly;
 struct _p_IndAssembly {
   IndDisc      disc;
   IndMaterials mats;
+  IndHistory   history;
+  IndTangent   tangent; /* -plastic_tangent: elastic only for comparisons, it loses quadratic Newton */
   IndVectorFn  body_force;
   void        *body_ctx;
+  PetscInt     nfailed;  /* local quadrature points whose return map failed, last residual */
+  PetscInt     nplastic; /* local quadrature points yielding (dp > 0), last residual */
   PetscReal   *ue, *fe, *Ke, *G, *DB; /* per-cell work arrays, allocated once */
 };
 
-PetscErrorCode IndAssemblyCreate(IndDisc disc, IndMaterials mats, IndAssembly *assembly);
+/* Per local cell, volume averages over the committed history (after IndHistoryCommit). */
+typedef struct {
+  PetscReal *stress;      /* 6 per cell, Voigt, GPa */
+  PetscReal *strain;      /* 6 per cell, engineering shears */
+  PetscReal *plastic;     /* accumulated equivalent plastic strain p */
+  PetscReal *back_stress; /* equivalent back stress sqrt(3/2) |x|, GPa */
+  PetscReal *yielding;    /* fraction of the cell's volume that yielded in the last step, 0..1 */
+} IndCellFields;
+
+PetscErrorCode IndAssemblyCreate(IndDisc disc, IndMaterials mats, IndHistory history, IndAssembly *assembly);
 PetscErrorCode IndAssemblyDestroy(IndAssembly *assembly);
 /* Creates the AIJ matrix (block size 3) preallocated by a dry run of the cell loop. */
 PetscErrorCode IndAssemblyCreateMatrix(IndAssembly assembly, Mat *J);
-/* Floc = internal minus external forces, over local cells (Floc is zeroed first). */
+/* Floc = internal minus external forces, over local cells (Floc is zeroed first); writes the trial
+   history and sets nfailed and nplastic. */
 PetscErrorCode IndAssemblyResidual(IndAssembly assembly, Vec Uloc, Vec Floc);
 PetscErrorCode IndAssemblyJacobian(IndAssembly assembly, Vec Uloc, Mat J);
-/* Volume averages per local cell of stress and strain (6 Voigt components each). */
-PetscErrorCode IndAssemblyCellAverages(IndAssembly assembly, Vec Uloc, PetscReal *stress, PetscReal *strain);
+PetscErrorCode IndAssemblyCellAverages(IndAssembly assembly, Vec Uloc, IndCellFields *fields);

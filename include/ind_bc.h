@@ -35,6 +35,9 @@ PetscErrorCode IndBCCreate(IndMesh mesh, IndDisc disc, IndBC *bc);
 PetscErrorCode IndBCDestroy(IndBC *bc);
 PetscErrorCode IndBCAddFunction(IndBC bc, const char label[], PetscInt mask, IndVectorFn fn, void *ctx);
 PetscErrorCode IndBCSetUp(IndBC bc);
+/* Makes the next IndBCSetUp re-evaluate every condition, e.g. after the state behind a function's
+   context changed (a non-proportional load path). */
+PetscErrorCode IndBCInvalidate(IndBC bc);
 /* U[row] = load_factor * value at every constrained row. */
 PetscErrorCode IndBCApplySolution(IndBC bc, PetscReal load_factor, Vec U);
 /* F[row] = U[row] - load_factor * value. */

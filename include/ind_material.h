@@ -1,13 +1,21 @@
 #pragma once
-/* A material per volume region, read from options prefixed by the region's name (-film_young). */
+/* A material per volume region, read from options prefixed by the region's name (-film_young):
+   linear elastic, or elasto-plastic (von Mises, Voce or linear isotropic + Prager kinematic hardening)
+   with -<region>_model plastic. */
 #include "ind_mesh.h"
 #include "ind_disc.h"
+#include "ind_plasticity.h"
+
+typedef enum { IND_MODEL_ELASTIC, IND_MODEL_PLASTIC } IndModel;
+extern const char *const IndModelTypes[];
 
 typedef struct {
-  char      region[IND_NAME_LEN];
-  PetscReal young;   /* GPa */
-  PetscReal poisson;
-  PetscReal kappa, mu; /* derived: bulk and shear moduli, GPa */
+  char             region[IND_NAME_LEN];
+  IndModel         model;
+  PetscReal        young;   /* GPa */
+  PetscReal        poisson;
+  PetscReal        kappa, mu; /* derived: bulk and shear moduli, GPa */
+  IndPlasticParams plastic; /* moduli copied in; elastic_only set for elastic regions */
 } IndMaterial;
 
 typedef struct _p_IndMaterials *IndMaterials;
@@ -17,5 +25,7 @@ struct _p_IndMaterials {
   PetscInt   *cell_material; /* per local cell of the discretisation: index into mat */
 };
 
+/* Whether any region is elasto-plastic (collective-free: every rank reads the same options). */
+PetscBool      IndMaterialsArePlastic(IndMaterials mats);
 PetscErrorCode IndMaterialsCreate(IndMesh mesh, IndDisc disc, IndMaterials *mats);
 PetscErrorCode IndMaterialsDestroy(IndMaterials *mats);

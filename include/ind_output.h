@@ -1,7 +1,8 @@
 #pragma once
 /* HDF5 output through PETSc viewers, with an XDMF index that ParaView opens:
    /geometry/vertices and /topology/cells once, then per output step /fields/displacement (vertices),
-   /fields/stress, /fields/strain, /fields/von_mises (cell averages). Provenance as attributes of "/". */
+   /fields/stress, /fields/strain, /fields/von_mises, /fields/plastic_strain, /fields/back_stress,
+   /fields/yielding (cell averages). Provenance as attributes of "/". */
 #include <petscviewerhdf5.h>
 #include "ind_mesh.h"
 #include "ind_disc.h"
@@ -18,8 +19,8 @@ struct _p_IndOutput {
   char        h5name[PETSC_MAX_PATH_LEN];
   PetscViewer viewer;
   DM          vdm, c6dm, c1dm; /* vertex (3 dof), cell (6 dof) and cell (1 dof) layouts */
-  Vec         Uloc, vloc, disp, stress, strain, vonmises;
-  PetscReal  *cstress, *cstrain;
+  Vec           Uloc, vloc, disp, stress, strain, vonmises, plastic, back, yielding;
+  IndCellFields cells; /* per local cell, filled by the assembly */
   PetscInt    nsteps;
   PetscReal  *times;
   PetscInt    nvert, ncell, corners; /* global counts */

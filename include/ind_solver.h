@@ -12,11 +12,16 @@ struct _p_IndSolver {
   IndBC        bc;
   SNES         snes;
   Mat          J;
-  Vec          Uloc, Floc;
+  Vec          Uloc, Floc, Ubc;
   PetscReal    load_factor; /* of the step being solved */
+  PetscInt     nfailed;     /* quadrature points, all ranks, whose return map failed in the last residual */
+  PetscInt     nplastic;    /* quadrature points, all ranks, yielding in the last residual */
 };
 
 PetscErrorCode IndSolverCreate(DM dm, IndAssembly assembly, IndBC bc, IndSolver *solver);
 PetscErrorCode IndSolverDestroy(IndSolver *solver);
+/* Evaluates the residual at U (load factor of the last solve): leaves the trial history consistent
+   with U, whatever iterate SNES evaluated last. */
+PetscErrorCode IndSolverEvaluate(IndSolver solver, Vec U);
 /* Solves for U at the given load factor; U holds the initial guess. */
 PetscErrorCode IndSolverSolve(IndSolver solver, PetscReal load_factor, Vec U, SNESConvergedReason *reason);

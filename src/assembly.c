@@ -1,15 +1,22 @@
 #include "ind_assembly.h"
 #include "ind_elasticity.h"
 
-PetscErrorCode IndAssemblyCreate(IndDisc disc, IndMaterials mats, IndAssembly *out)
+const char *const IndTangentTypes[] = {"consistent", "elastic", "IndTangent", "IND_TANGENT_", NULL};
+
+PetscErrorCode IndAssemblyCreate(IndDisc disc, IndMaterials mats, IndHistory history, IndAssembly *out)
 {
   IndAssembly a;
   PetscInt    nd = disc->ndof;
 
   PetscFunctionBeginUser;
   PetscCall(PetscCalloc1(1, &a));
-  a->disc = disc;
-  a->mats = mats;
+  a->disc    = disc;
+  a->mats    = mats;
+  a->history = history;
+  a->tangent = IND_TANGENT_CONSISTENT;
+  PetscOptionsBegin(PetscObjectComm((PetscObject)disc->dm), NULL, "Assembly", "Assembly");
+  PetscCall(PetscOptionsEnum("-plastic_tangent", "Tangent of plastic points: consistent (quadratic Newton) or elastic", "", IndTangentTypes, (PetscEnum)a->tangent, (PetscEnum *)&a->tangent, NULL));
+  PetscOptionsEnd();
   PetscCall(PetscMalloc5(nd, &a->ue, nd, &a->fe, nd * nd, &a->Ke, disc->nb * 3, &a->G, 6 * nd, &a->DB));
   *out = a;
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -45,25 +52,41 @@ static inline void GatherCell(IndDisc disc, PetscInt i, const PetscScalar *u, Pe
   for (PetscInt k = 0; k < disc->ndof; ++k) ue[k] = PetscRealPart(u[idx[k]]);
 }
 
-/* The constitutive response of one quadrature point; plasticity plugs in here. */
-static inline void MaterialResponse(const IndMaterial *m, const PetscReal eps[6], PetscReal sigma[6], PetscReal *D)
+/* The constitutive update of one quadrature point from its committed history old (IND_HISTORY_NVAL
+   values); writes the trial history to trial when not NULL and the tangent to D when not NULL. */
+static inline IndPlasticStatus MaterialResponse(const IndMaterial *m, IndTangent tangent, const PetscReal eps[6], const PetscReal *old, PetscReal *trial, PetscReal sigma[6], PetscReal *D, PetscReal *dp)
 {
-  IndElasticStress(m->kappa, m->mu, eps, sigma);
-  if (D) IndElasticTangent(m->kappa, m->mu, D);
+  IndPlasticState  scratch;
+  IndPlasticStatus status;
+
+  *dp = 0.0;
+  if (m->model == IND_MODEL_ELASTIC) {
+    IndElasticStress(m->kappa, m->mu, eps, sigma);
+    if (D) IndElasticTangent(m->kappa, m->mu, D);
+    return IND_PLASTIC_OK;
+  }
+  status = IndPlasticUpdate(&m->plastic, eps, (const IndPlasticState *)old, trial ? (IndPlasticState *)trial : &scratch, sigma, tangent == IND_TANGENT_CONSISTENT ? D : NULL, dp);
+  if (trial) trial[IND_HISTORY_DP] = *dp;
+  if (D && tangent == IND_TANGENT_ELASTIC) IndElasticTangent(m->kappa, m->mu, D);
+  return status;
 }
 
 PetscErrorCode IndAssemblyResidual(IndAssembly a, Vec Uloc, Vec Floc)
 {
   IndDisc            disc = a->disc;
   const PetscInt     nb = disc->nb, nq = disc->nq;
-  const PetscScalar *u;
-  PetscScalar       *f;
+  const PetscInt     stride = a->history->stride;
+  const PetscScalar *u, *hold;
+  PetscScalar       *f, *htrial;
 
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(IndLog.residual, 0, 0, 0, 0));
+  a->nfailed = a->nplastic = 0;
   PetscCall(VecZeroEntries(Floc));
   PetscCall(VecGetArrayRead(Uloc, &u));
   PetscCall(VecGetArray(Floc, &f));
+  PetscCall(VecGetArrayRead(a->history->committed, &hold));
+  PetscCall(VecGetArray(a->history->trial, &htrial));
   for (PetscInt i = 0; i < disc->ncell; ++i) {
     const IndMaterial *m   = &a->mats->mat[a->mats->cell_material[i]];
     const PetscInt    *idx = disc->lidx + i * disc->ndof;
@@ -72,11 +95,12 @@ PetscErrorCode IndAssemblyResidual(IndAssembly a, Vec Uloc, Vec Floc)
     PetscCall(PetscArrayzero(a->fe, disc->ndof));
     for (PetscInt q = 0; q < nq; ++q) {
       const PetscReal w = disc->wdetJ[i * nq + q];
-      PetscReal       eps[6], s[6];
+      PetscReal       eps[6], s[6], dp;
 
       IndDiscGradients(disc, i, q, a->G);
       Strain(nb, a->G, a->ue, eps);
-      MaterialResponse(m, eps, s, NULL);
+      if (MaterialResponse(m, a->tangent, eps, hold + i * stride + q * IND_HISTORY_NVAL, htrial + i * stride + q * IND_HISTORY_NVAL, s, NULL, &dp) != IND_PLASTIC_OK) a->nfailed++;
+      else if (dp > 0) a->nplastic++;
       for (PetscInt b = 0; b < nb; ++b) {
         const PetscReal gx = a->G[3 * b], gy = a->G[3 * b + 1], gz = a->G[3 * b + 2];
         a->fe[3 * b + 0] += w * (gx * s[0] + gy * s[3] + gz * s[5]);
@@ -92,6 +116,8 @@ PetscErrorCode IndAssemblyResidual(IndAssembly a, Vec Uloc, Vec Floc)
     }
     for (PetscInt k = 0; k < disc->ndof; ++k) f[idx[k]] += a->fe[k];
   }
+  PetscCall(VecRestoreArrayRead(a->history->committed, &hold));
+  PetscCall(VecRestoreArray(a->history->trial, &htrial));
   PetscCall(VecRestoreArrayRead(Uloc, &u));
   PetscCall(VecRestoreArray(Floc, &f));
   PetscCall(PetscLogFlops(disc->ncell * nq * (30.0 * nb)));
@@ -126,13 +152,14 @@ static inline void AddBtDB(PetscInt nb, const PetscReal *G, const PetscReal D[36
 PetscErrorCode IndAssemblyJacobian(IndAssembly a, Vec Uloc, Mat J)
 {
   IndDisc            disc = a->disc;
-  const PetscInt     nb = disc->nb, nq = disc->nq, nd = disc->ndof;
-  const PetscScalar *u;
+  const PetscInt     nb = disc->nb, nq = disc->nq, nd = disc->ndof, stride = a->history->stride;
+  const PetscScalar *u, *hold;
 
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(IndLog.jacobian, 0, 0, 0, 0));
   PetscCall(MatZeroEntries(J));
   PetscCall(VecGetArrayRead(Uloc, &u));
+  PetscCall(VecGetArrayRead(a->history->committed, &hold));
   for (PetscInt i = 0; i < disc->ncell; ++i) {
     const IndMaterial *m = &a->mats->mat[a->mats->cell_material[i]];
     const PetscInt    *g = disc->gidx + i * nd;
@@ -140,14 +167,17 @@ PetscErrorCode IndAssemblyJacobian(IndAssembly a, Vec Uloc, Mat J)
     GatherCell(disc, i, u, a->ue);
     PetscCall(PetscArrayzero(a->Ke, nd * nd));
     for (PetscInt q = 0; q < nq; ++q) {
-      PetscReal eps[6], s[6], D[36];
+      PetscReal eps[6], s[6], D[36], dp;
       IndDiscGradients(disc, i, q, a->G);
       Strain(nb, a->G, a->ue, eps);
-      MaterialResponse(m, eps, s, D);
+      /* A failed return was already reported by the residual at this displacement, which stops the
+         Newton iteration before any Jacobian; its NaN tangent cannot go unnoticed either. */
+      (void)MaterialResponse(m, a->tangent, eps, hold + i * stride + q * IND_HISTORY_NVAL, NULL, s, D, &dp);
       AddBtDB(nb, a->G, D, disc->wdetJ[i * nq + q], a->DB, a->Ke);
     }
     PetscCall(MatSetValues(J, nd, g, nd, g, a->Ke, ADD_VALUES));
   }
+  PetscCall(VecRestoreArrayRead(a->history->committed, &hold));
   PetscCall(VecRestoreArrayRead(Uloc, &u));
   PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));
@@ -193,35 +223,48 @@ PetscErrorCode IndAssemblyCreateMatrix(IndAssembly a, Mat *J)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode IndAssemblyCellAverages(IndAssembly a, Vec Uloc, PetscReal *stress, PetscReal *strain)
+PetscErrorCode IndAssemblyCellAverages(IndAssembly a, Vec Uloc, IndCellFields *out)
 {
   IndDisc            disc = a->disc;
-  const PetscInt     nq   = disc->nq;
-  const PetscScalar *u;
+  const PetscInt     nq = disc->nq, stride = a->history->stride;
+  const PetscScalar *u, *hist;
 
   PetscFunctionBeginUser;
   PetscCall(VecGetArrayRead(Uloc, &u));
+  PetscCall(VecGetArrayRead(a->history->committed, &hist));
   for (PetscInt i = 0; i < disc->ncell; ++i) {
     const IndMaterial *m   = &a->mats->mat[a->mats->cell_material[i]];
-    PetscReal          vol = 0, savg[6] = {0}, eavg[6] = {0};
+    PetscReal          vol = 0, savg[6] = {0}, eavg[6] = {0}, pavg = 0, xavg = 0, yavg = 0;
     GatherCell(disc, i, u, a->ue);
     for (PetscInt q = 0; q < nq; ++q) {
-      const PetscReal w = disc->wdetJ[i * nq + q];
-      PetscReal       eps[6], s[6];
+      const PetscReal  w = disc->wdetJ[i * nq + q];
+      const PetscReal *h = hist + i * stride + q * IND_HISTORY_NVAL;
+      const IndPlasticState *st = (const IndPlasticState *)h;
+      PetscReal        eps[6], ee[6], s[6];
       IndDiscGradients(disc, i, q, a->G);
       Strain(disc->nb, a->G, a->ue, eps);
-      MaterialResponse(m, eps, s, NULL);
+      /* The committed state is the converged one: its stress is elastic in eps - eps_p (eps_p is
+         deviatoric), with no return map to repeat. */
+      for (int k = 0; k < 6; ++k) ee[k] = eps[k] - st->eps_p[k];
+      IndElasticStress(m->kappa, m->mu, ee, s);
       vol += w;
       for (int k = 0; k < 6; ++k) {
         savg[k] += w * s[k];
         eavg[k] += w * eps[k];
       }
+      pavg += w * st->p;
+      xavg += w * IndVonMises(st->x);
+      yavg += h[IND_HISTORY_DP] > 0 ? w : 0.0;
     }
     for (int k = 0; k < 6; ++k) {
-      stress[6 * i + k] = savg[k] / vol;
-      strain[6 * i + k] = eavg[k] / vol;
+      out->stress[6 * i + k] = savg[k] / vol;
+      out->strain[6 * i + k] = eavg[k] / vol;
     }
+    out->plastic[i]     = pavg / vol;
+    out->back_stress[i] = xavg / vol;
+    out->yielding[i]    = yavg / vol;
   }
+  PetscCall(VecRestoreArrayRead(a->history->committed, &hist));
   PetscCall(VecRestoreArrayRead(Uloc, &u));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -266,6 +266,13 @@ PetscErrorCode IndBCSetUp(IndBC bc)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+PetscErrorCode IndBCInvalidate(IndBC bc)
+{
+  PetscFunctionBeginUser;
+  bc->setup = PETSC_FALSE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode IndBCApplySolution(IndBC bc, PetscReal lf, Vec U)
 {
   PetscScalar *u;

@@ -1,6 +1,40 @@
 #include "ind_material.h"
 #include "ind_elasticity.h"
 
+const char *const IndModelTypes[] = {"elastic", "plastic", "IndModel", "IND_MODEL_", NULL};
+
+/* A parameter the plastic model needs and has no default for. */
+static PetscErrorCode RequirePlastic(MPI_Comm comm, const char region[], const char name[], PetscBool set, const char what[])
+{
+  PetscFunctionBeginUser;
+  PetscCheck(set, comm, PETSC_ERR_ARG_WRONG, "Region '%s' is plastic (-%s_model plastic) but option -%s_%s (%s) is missing", region, region, region, name, what);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode ReadPlastic(MPI_Comm comm, const char prefix[], IndMaterial *m)
+{
+  IndPlasticParams *pp = &m->plastic;
+  PetscBool         set;
+
+  PetscFunctionBeginUser;
+  PetscOptionsBegin(comm, prefix, "Elasto-plastic material of a volume region", "Material");
+  PetscCall(PetscOptionsEnum("-hardening", "Isotropic hardening law", "", IndHardeningTypes, (PetscEnum)pp->hardening, (PetscEnum *)&pp->hardening, NULL));
+  PetscCall(PetscOptionsReal("-yield", "Initial yield stress R0 (GPa)", "", pp->R0, &pp->R0, &set));
+  PetscCall(RequirePlastic(comm, m->region, "yield", set, "initial yield stress, GPa"));
+  if (pp->hardening == IND_HARDENING_VOCE) {
+    PetscCall(PetscOptionsReal("-saturation", "Voce saturation stress Rs (GPa)", "", pp->Rs, &pp->Rs, &set));
+    PetscCall(RequirePlastic(comm, m->region, "saturation", set, "Voce saturation stress, GPa"));
+    PetscCall(PetscOptionsReal("-voce_rate", "Voce rate gamma", "", pp->gamma, &pp->gamma, &set));
+    PetscCall(RequirePlastic(comm, m->region, "voce_rate", set, "Voce rate"));
+  } else {
+    PetscCall(PetscOptionsReal("-hardening_slope", "Linear isotropic hardening slope h (GPa)", "", pp->h, &pp->h, NULL));
+  }
+  PetscCall(PetscOptionsReal("-kinematic", "Prager kinematic hardening modulus H (GPa)", "", pp->H, &pp->H, NULL));
+  PetscCall(PetscOptionsInt("-return_max_it", "Iteration cap of the scalar return-map solve", "", pp->max_iterations, &pp->max_iterations, NULL));
+  PetscOptionsEnd();
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscErrorCode ReadMaterial(MPI_Comm comm, const char region[], IndMaterial *m)
 {
   char      prefix[IND_NAME_LEN + 2], opt[IND_NAME_LEN + 32];
@@ -12,6 +46,7 @@ static PetscErrorCode ReadMaterial(MPI_Comm comm, const char region[], IndMateri
   PetscOptionsBegin(comm, prefix, "Material of a volume region", "Material");
   PetscCall(PetscOptionsReal("-young", "Young's modulus (GPa)", "", m->young, &m->young, &has_E));
   PetscCall(PetscOptionsReal("-poisson", "Poisson's ratio", "", m->poisson, &m->poisson, &has_nu));
+  PetscCall(PetscOptionsEnum("-model", "Constitutive model", "", IndModelTypes, (PetscEnum)m->model, (PetscEnum *)&m->model, NULL));
   PetscOptionsEnd();
   PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%syoung", prefix));
   PetscCheck(has_E, comm, PETSC_ERR_ARG_WRONG, "Region '%s' needs a material: option %s (GPa) is missing", region, opt);
@@ -20,6 +55,11 @@ static PetscErrorCode ReadMaterial(MPI_Comm comm, const char region[], IndMateri
   PetscCheck(has_nu, comm, PETSC_ERR_ARG_WRONG, "Region '%s' needs a material: option %s is missing", region, opt);
   PetscCheck(m->poisson > -1.0 && m->poisson < 0.5, comm, PETSC_ERR_ARG_OUTOFRANGE, "%s must lie in (-1, 0.5), got %g", opt, (double)m->poisson);
   IndElasticModuli(m->young, m->poisson, &m->kappa, &m->mu);
+  m->plastic.kappa        = m->kappa;
+  m->plastic.mu           = m->mu;
+  m->plastic.elastic_only = m->model == IND_MODEL_ELASTIC ? PETSC_TRUE : PETSC_FALSE;
+  if (m->model == IND_MODEL_PLASTIC) PetscCall(ReadPlastic(comm, prefix, m));
+  PetscCall(IndPlasticParamsCheck(&m->plastic, prefix, comm));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -64,6 +104,13 @@ PetscErrorCode IndMaterialsCreate(IndMesh mesh, IndDisc disc, IndMaterials *out)
   PetscCheck(!unassigned, comm, PETSC_ERR_ARG_WRONG, "%" PetscInt_FMT " cells of mesh '%s' (e.g. local cell %" PetscInt_FMT ") belong to no physical volume: give every volume a physical name in gmsh", unassigned, mesh->source, first);
   *out = mats;
   PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscBool IndMaterialsArePlastic(IndMaterials mats)
+{
+  for (PetscInt k = 0; k < mats->n; ++k)
+    if (mats->mat[k].model == IND_MODEL_PLASTIC) return PETSC_TRUE;
+  return PETSC_FALSE;
 }
 
 PetscErrorCode IndMaterialsDestroy(IndMaterials *mats)

@@ -195,6 +195,9 @@ static PetscErrorCode WriteXdmf(IndOutput o)
     {"stress", "Matrix", "Cell", o->ncell, 6}, /* Voigt xx,yy,zz,xy,yz,xz: not XDMF Tensor6 order */
     {"strain", "Matrix", "Cell", o->ncell, 6},
     {"von_mises", "Scalar", "Cell", o->ncell, 1},
+    {"plastic_strain", "Scalar", "Cell", o->ncell, 1},
+    {"back_stress", "Scalar", "Cell", o->ncell, 1},
+    {"yielding", "Scalar", "Cell", o->ncell, 1},
   };
 
   PetscFunctionBeginUser;
@@ -253,11 +256,17 @@ PetscErrorCode IndOutputCreate(IndMesh mesh, IndDisc disc, IndOutput *out)
   PetscCall(DMCreateGlobalVector(o->c6dm, &o->stress));
   PetscCall(DMCreateGlobalVector(o->c6dm, &o->strain));
   PetscCall(DMCreateGlobalVector(o->c1dm, &o->vonmises));
+  PetscCall(DMCreateGlobalVector(o->c1dm, &o->plastic));
+  PetscCall(DMCreateGlobalVector(o->c1dm, &o->back));
+  PetscCall(DMCreateGlobalVector(o->c1dm, &o->yielding));
   PetscCall(PetscObjectSetName((PetscObject)o->disp, "displacement"));
   PetscCall(PetscObjectSetName((PetscObject)o->stress, "stress"));
   PetscCall(PetscObjectSetName((PetscObject)o->strain, "strain"));
   PetscCall(PetscObjectSetName((PetscObject)o->vonmises, "von_mises"));
-  PetscCall(PetscMalloc3(disc->ncell * 6, &o->cstress, disc->ncell * 6, &o->cstrain, IND_MAX_OUTPUT_STEPS, &o->times));
+  PetscCall(PetscObjectSetName((PetscObject)o->plastic, "plastic_strain"));
+  PetscCall(PetscObjectSetName((PetscObject)o->back, "back_stress"));
+  PetscCall(PetscObjectSetName((PetscObject)o->yielding, "yielding"));
+  PetscCall(PetscMalloc1(IND_MAX_OUTPUT_STEPS, &o->times));
   *out = o;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -266,7 +275,7 @@ PetscErrorCode IndOutputWriteStep(IndOutput o, PetscReal time, Vec U, IndAssembl
 {
   PetscSection       us;
   const PetscScalar *u;
-  PetscScalar       *s, *e, *vm;
+  PetscScalar       *vm;
 
   PetscFunctionBeginUser;
   if (!o->enabled) PetscFunctionReturn(PETSC_SUCCESS);
@@ -280,21 +289,22 @@ PetscErrorCode IndOutputWriteStep(IndOutput o, PetscReal time, Vec U, IndAssembl
   PetscCall(GatherVertexValues(o, us, u, o->disp));
   PetscCall(VecRestoreArrayRead(o->Uloc, &u));
 
-  /* Cells are not shared (no overlap), so local cell i is the i-th owned entry. */
-  PetscCall(IndAssemblyCellAverages(assembly, o->Uloc, o->cstress, o->cstrain));
-  PetscCall(VecGetArray(o->stress, &s));
-  PetscCall(VecGetArray(o->strain, &e));
+  /* Cells are not shared (no overlap), so local cell i is the i-th owned entry of each cell vector:
+     the assembly writes straight into them. */
+  PetscCall(VecGetArray(o->stress, &o->cells.stress));
+  PetscCall(VecGetArray(o->strain, &o->cells.strain));
+  PetscCall(VecGetArray(o->plastic, &o->cells.plastic));
+  PetscCall(VecGetArray(o->back, &o->cells.back_stress));
+  PetscCall(VecGetArray(o->yielding, &o->cells.yielding));
+  PetscCall(IndAssemblyCellAverages(assembly, o->Uloc, &o->cells));
   PetscCall(VecGetArray(o->vonmises, &vm));
-  for (PetscInt i = 0; i < o->disc->ncell; ++i) {
-    for (int k = 0; k < 6; ++k) {
-      s[6 * i + k] = o->cstress[6 * i + k];
-      e[6 * i + k] = o->cstrain[6 * i + k];
-    }
-    vm[i] = IndVonMises(o->cstress + 6 * i);
-  }
-  PetscCall(VecRestoreArray(o->stress, &s));
-  PetscCall(VecRestoreArray(o->strain, &e));
+  for (PetscInt i = 0; i < o->disc->ncell; ++i) vm[i] = IndVonMises(o->cells.stress + 6 * i);
   PetscCall(VecRestoreArray(o->vonmises, &vm));
+  PetscCall(VecRestoreArray(o->stress, &o->cells.stress));
+  PetscCall(VecRestoreArray(o->strain, &o->cells.strain));
+  PetscCall(VecRestoreArray(o->plastic, &o->cells.plastic));
+  PetscCall(VecRestoreArray(o->back, &o->cells.back_stress));
+  PetscCall(VecRestoreArray(o->yielding, &o->cells.yielding));
 
   PetscCall(PetscViewerHDF5SetTimestep(o->viewer, o->nsteps));
   PetscCall(PetscViewerHDF5PushGroup(o->viewer, "/fields"));
@@ -302,6 +312,9 @@ PetscErrorCode IndOutputWriteStep(IndOutput o, PetscReal time, Vec U, IndAssembl
   PetscCall(VecView(o->stress, o->viewer));
   PetscCall(VecView(o->strain, o->viewer));
   PetscCall(VecView(o->vonmises, o->viewer));
+  PetscCall(VecView(o->plastic, o->viewer));
+  PetscCall(VecView(o->back, o->viewer));
+  PetscCall(VecView(o->yielding, o->viewer));
   PetscCall(PetscViewerHDF5PopGroup(o->viewer));
   PetscCall(PetscViewerFlush(o->viewer));
   o->times[o->nsteps++] = time;
@@ -323,10 +336,13 @@ PetscErrorCode IndOutputDestroy(IndOutput *o)
   PetscCall(VecDestroy(&(*o)->stress));
   PetscCall(VecDestroy(&(*o)->strain));
   PetscCall(VecDestroy(&(*o)->vonmises));
+  PetscCall(VecDestroy(&(*o)->plastic));
+  PetscCall(VecDestroy(&(*o)->back));
+  PetscCall(VecDestroy(&(*o)->yielding));
   PetscCall(DMDestroy(&(*o)->vdm));
   PetscCall(DMDestroy(&(*o)->c6dm));
   PetscCall(DMDestroy(&(*o)->c1dm));
-  PetscCall(PetscFree3((*o)->cstress, (*o)->cstrain, (*o)->times));
+  PetscCall(PetscFree((*o)->times));
   PetscCall(PetscFree(*o));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -1,16 +1,28 @@
 #include "ind_solver.h"
 
+/* The free rows see the prescribed values, not U's, on constrained dofs: the residual of a free row
+   then does not depend on constrained entries of U, so the Jacobian with those rows and columns
+   replaced by the identity is its exact derivative (and -snes_test_jacobian can check it). */
 static PetscErrorCode FormResidual(SNES snes, Vec U, Vec F, void *ctx)
 {
   IndSolver s = (IndSolver)ctx;
+  PetscInt  counts[2];
 
   PetscFunctionBeginUser;
-  (void)snes;
-  PetscCall(DMGlobalToLocal(s->dm, U, INSERT_VALUES, s->Uloc));
+  PetscCall(VecCopy(U, s->Ubc));
+  PetscCall(IndBCApplySolution(s->bc, s->load_factor, s->Ubc));
+  PetscCall(DMGlobalToLocal(s->dm, s->Ubc, INSERT_VALUES, s->Uloc));
   PetscCall(IndAssemblyResidual(s->assembly, s->Uloc, s->Floc));
   PetscCall(VecZeroEntries(F));
   PetscCall(DMLocalToGlobal(s->dm, s->Floc, ADD_VALUES, F));
   PetscCall(IndBCApplyResidual(s->bc, s->load_factor, U, F));
+  counts[0] = s->assembly->nfailed;
+  counts[1] = s->assembly->nplastic;
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, counts, 2, MPIU_INT, MPI_SUM, PetscObjectComm((PetscObject)s->dm)));
+  s->nfailed  = counts[0];
+  s->nplastic = counts[1];
+  /* On every rank, so that all of them leave the Newton iteration together; the load step is cut. */
+  if (snes && s->nfailed) PetscCall(SNESSetFunctionDomainError(snes));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -20,7 +32,9 @@ static PetscErrorCode FormJacobian(SNES snes, Vec U, Mat A, Mat P, void *ctx)
 
   PetscFunctionBeginUser;
   (void)snes;
-  PetscCall(DMGlobalToLocal(s->dm, U, INSERT_VALUES, s->Uloc));
+  PetscCall(VecCopy(U, s->Ubc));
+  PetscCall(IndBCApplySolution(s->bc, s->load_factor, s->Ubc));
+  PetscCall(DMGlobalToLocal(s->dm, s->Ubc, INSERT_VALUES, s->Uloc));
   PetscCall(IndAssemblyJacobian(s->assembly, s->Uloc, P));
   PetscCall(IndBCApplyJacobian(s->bc, P));
   if (A != P) {
@@ -44,6 +58,7 @@ PetscErrorCode IndSolverCreate(DM dm, IndAssembly assembly, IndBC bc, IndSolver 
   s->bc       = bc;
   PetscCall(DMCreateLocalVector(dm, &s->Uloc));
   PetscCall(DMCreateLocalVector(dm, &s->Floc));
+  PetscCall(DMCreateGlobalVector(dm, &s->Ubc));
   PetscCall(PetscLogEventBegin(IndLog.preallocate, 0, 0, 0, 0));
   PetscCall(IndAssemblyCreateMatrix(assembly, &s->J));
   PetscCall(PetscLogEventEnd(IndLog.preallocate, 0, 0, 0, 0));
@@ -96,6 +111,17 @@ PetscErrorCode IndSolverSolve(IndSolver s, PetscReal load_factor, Vec U, SNESCon
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+PetscErrorCode IndSolverEvaluate(IndSolver s, Vec U)
+{
+  Vec F;
+
+  PetscFunctionBeginUser;
+  PetscCall(VecDuplicate(U, &F));
+  PetscCall(FormResidual(NULL, U, F, s));
+  PetscCall(VecDestroy(&F));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode IndSolverDestroy(IndSolver *s)
 {
   PetscFunctionBeginUser;
@@ -104,6 +130,7 @@ PetscErrorCode IndSolverDestroy(IndSolver *s)
   PetscCall(MatDestroy(&(*s)->J));
   PetscCall(VecDestroy(&(*s)->Uloc));
   PetscCall(VecDestroy(&(*s)->Floc));
+  PetscCall(VecDestroy(&(*s)->Ubc));
   PetscCall(PetscFree(*s));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

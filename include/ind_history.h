@@ -1,0 +1,27 @@
+#pragma once
+/* The history of every quadrature point (plastic strain, back stress, accumulated plastic strain and
+   the increment of the last step), as two distributed vectors laid out by a PetscSection on the cells:
+   - committed: the state at the end of the last accepted load step;
+   - trial: recomputed from committed and the current displacement at every residual evaluation.
+   A rejected step therefore needs no undo, and the whole state can be saved, restored and compared
+   as ordinary vectors on any number of ranks. */
+#include <petscdm.h>
+#include "ind_disc.h"
+#include "ind_plasticity.h"
+
+/* Values per quadrature point: IndPlasticState (eps_p 6, x 6, p 1), then dp of the step. */
+#define IND_HISTORY_NVAL 14
+#define IND_HISTORY_DP   13
+
+typedef struct _p_IndHistory *IndHistory;
+struct _p_IndHistory {
+  DM       dm;     /* clone of the mesh carrying the cell section */
+  PetscInt nq;     /* quadrature points per cell */
+  PetscInt stride; /* values per cell: nq * IND_HISTORY_NVAL; local cell i starts at i * stride */
+  Vec      committed, trial;
+};
+
+PetscErrorCode IndHistoryCreate(IndDisc disc, IndHistory *history);
+PetscErrorCode IndHistoryDestroy(IndHistory *history);
+/* Accepts the trial state of the step just converged. */
+PetscErrorCode IndHistoryCommit(IndHistory history);

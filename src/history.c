@@ -1,0 +1,66 @@
+#include "ind_history.h"
+
+#if defined(PETSC_USE_COMPLEX)
+  #error "indent stores quadrature-point history as real numbers: build against a real PETSc"
+#endif
+_Static_assert(sizeof(IndPlasticState) == IND_HISTORY_DP * sizeof(PetscReal), "IndPlasticState must be IND_HISTORY_DP packed reals");
+
+PetscErrorCode IndHistoryCreate(IndDisc disc, IndHistory *out)
+{
+  IndHistory   h;
+  PetscSection s, gs;
+  PetscInt     pStart, pEnd, n;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscCalloc1(1, &h));
+  h->nq     = disc->nq;
+  h->stride = disc->nq * IND_HISTORY_NVAL;
+  PetscCall(DMClone(disc->dm, &h->dm));
+  PetscCall(DMPlexGetChart(disc->dm, &pStart, &pEnd));
+  PetscCall(PetscSectionCreate(PetscObjectComm((PetscObject)disc->dm), &s));
+  PetscCall(PetscSectionSetChart(s, pStart, pEnd));
+  for (PetscInt i = 0; i < disc->ncell; ++i) PetscCall(PetscSectionSetDof(s, disc->cStart + i, h->stride));
+  PetscCall(PetscSectionSetUp(s));
+  PetscCall(DMSetLocalSection(h->dm, s));
+  PetscCall(PetscSectionDestroy(&s));
+  PetscCall(DMCreateGlobalVector(h->dm, &h->committed));
+  PetscCall(VecDuplicate(h->committed, &h->trial));
+  PetscCall(PetscObjectSetName((PetscObject)h->committed, "history"));
+  PetscCall(PetscObjectSetName((PetscObject)h->trial, "history_trial"));
+  PetscCall(VecZeroEntries(h->committed));
+  PetscCall(VecZeroEntries(h->trial));
+
+  /* The cell loop indexes the history as i * stride: with no cell overlap every cell is owned, so the
+     owned part of the global vector is exactly that; check it rather than assume it. */
+  PetscCall(VecGetLocalSize(h->committed, &n));
+  PetscCheck(n == disc->ncell * h->stride, PETSC_COMM_SELF, PETSC_ERR_PLIB, "History holds %" PetscInt_FMT " values for %" PetscInt_FMT " local cells of %" PetscInt_FMT, n, disc->ncell, h->stride);
+  PetscCall(DMGetGlobalSection(h->dm, &gs));
+  {
+    PetscInt rstart, off;
+    PetscCall(VecGetOwnershipRange(h->committed, &rstart, NULL));
+    for (PetscInt i = 0; i < disc->ncell; ++i) {
+      PetscCall(PetscSectionGetOffset(gs, disc->cStart + i, &off));
+      PetscCheck(off - rstart == i * h->stride, PETSC_COMM_SELF, PETSC_ERR_PLIB, "History of cell %" PetscInt_FMT " is not at i * stride", disc->cStart + i);
+    }
+  }
+  *out = h;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode IndHistoryCommit(IndHistory h)
+{
+  PetscFunctionBeginUser;
+  PetscCall(VecCopy(h->trial, h->committed));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode IndHistoryDestroy(IndHistory *h)
+{
+  PetscFunctionBeginUser;
+  if (!*h) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(VecDestroy(&(*h)->committed));
+  PetscCall(VecDestroy(&(*h)->trial));
+  PetscCall(DMDestroy(&(*h)->dm));
+  PetscCall(PetscFree(*h));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
