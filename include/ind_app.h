@@ -10,6 +10,11 @@
 #include "ind_history.h"
 #include "ind_loadpath.h"
 
+/* How each step's Newton iteration starts: from the last increment extrapolated when there is one
+   (else the tangent response), always from the tangent response, or from the prescribed values alone. */
+typedef enum { IND_PREDICTOR_EXTRAPOLATE, IND_PREDICTOR_TANGENT, IND_PREDICTOR_NONE } IndPredictor;
+extern const char *const IndPredictorTypes[];
+
 /* What one attempt at a load step did. */
 typedef struct {
   PetscReal           t;         /* load factor aimed at */
@@ -38,7 +43,7 @@ struct _p_IndApp {
   Vec          Uprev; /* U of the last accepted step, to retry from */
   Vec          dU;    /* increment of the last accepted step, for the predictor */
   PetscReal    dt_last; /* its load-factor increment; 0 before the first step */
-  PetscBool    extrapolate;
+  IndPredictor predictor;
   IndLoadPath  path;
   PetscBool    quiet;
   IndStepMonitor monitor;

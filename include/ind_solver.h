@@ -20,6 +20,10 @@ struct _p_IndSolver {
 
 PetscErrorCode IndSolverCreate(DM dm, IndAssembly assembly, IndBC bc, IndSolver *solver);
 PetscErrorCode IndSolverDestroy(IndSolver *solver);
+/* Tangent predictor for a step from load factor t_old (U converged there) to t_new: adds the
+   prescribed-value increment and the response of the tangent at U to it, so that an elastic step
+   converges in one Newton iteration instead of starting from a strained boundary layer of cells. */
+PetscErrorCode IndSolverPredict(IndSolver solver, PetscReal t_old, PetscReal t_new, Vec U);
 /* Evaluates the residual at U (load factor of the last solve): leaves the trial history consistent
    with U, whatever iterate SNES evaluated last. */
 PetscErrorCode IndSolverEvaluate(IndSolver solver, Vec U);

@@ -1,5 +1,7 @@
 #include "ind_app.h"
 
+const char *const IndPredictorTypes[] = {"extrapolate", "tangent", "none", "IndPredictor", "IND_PREDICTOR_", NULL};
+
 PetscErrorCode IndAppCreate(MPI_Comm comm, IndApp *out)
 {
   IndApp   app;
@@ -8,10 +10,10 @@ PetscErrorCode IndAppCreate(MPI_Comm comm, IndApp *out)
   PetscFunctionBeginUser;
   PetscCall(IndLogRegister());
   PetscCall(PetscCalloc1(1, &app));
-  app->comm        = comm;
-  app->extrapolate = PETSC_TRUE;
+  app->comm      = comm;
+  app->predictor = IND_PREDICTOR_EXTRAPOLATE;
   PetscOptionsBegin(comm, NULL, "Run", "Run");
-  PetscCall(PetscOptionsBool("-load_extrapolate", "Start each step from the last increment extrapolated", "", app->extrapolate, &app->extrapolate, NULL));
+  PetscCall(PetscOptionsEnum("-load_predictor", "Start of each step's Newton iteration", "", IndPredictorTypes, (PetscEnum)app->predictor, (PetscEnum *)&app->predictor, NULL));
   PetscCall(PetscOptionsBool("-quiet", "Print nothing but errors", "", app->quiet, &app->quiet, NULL));
   PetscOptionsEnd();
   PetscCall(IndLoadPathSetFromOptions(comm, &app->path));
@@ -80,9 +82,10 @@ PetscErrorCode IndAppSolveStep(IndApp app, PetscReal t, IndStepResult *r)
   PetscCall(PetscTime(&t0));
   PetscCall(PetscLogStagePush(IndLog.solve));
   PetscCall(VecCopy(app->U, app->Uprev));
-  /* The boundary values alone would strain only the boundary layer of cells, which then yields in
-     the first iterate; extrapolating the last increment starts Newton near the answer. */
-  if (app->extrapolate && app->dt_last > 0) PetscCall(VecAXPY(app->U, (t - app->path.t) / app->dt_last, app->dU));
+  /* The prescribed values alone would strain only the boundary layer of cells, which then yields in
+     the first iterate and sends Newton astray; either predictor starts it near the answer. */
+  if (app->predictor == IND_PREDICTOR_EXTRAPOLATE && app->dt_last > 0) PetscCall(VecAXPY(app->U, (t - app->path.t) / app->dt_last, app->dU));
+  else if (app->predictor != IND_PREDICTOR_NONE) PetscCall(IndSolverPredict(s, app->path.t, t, app->U));
   PetscCall(IndSolverSolve(s, t, app->U, &r->reason));
   PetscCall(SNESGetIterationNumber(s->snes, &r->newton));
   PetscCall(SNESGetLinearSolveIterations(s->snes, &r->linear));

@@ -12,8 +12,7 @@ PetscErrorCode IndLoadPathSetFromOptions(MPI_Comm comm, IndLoadPath *lp)
   lp->max_cutbacks = 10;
   PetscOptionsBegin(comm, NULL, "Load stepping", "Load");
   PetscCall(PetscOptionsInt("-load_steps", "Number of load steps when none is cut back", "", steps, &steps, NULL));
-  PetscCheck(steps >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-load_steps must be >= 1, got %" PetscInt_FMT, steps);
-  lp->dt_initial = 1.0 / steps;
+  lp->dt_initial = 1.0 / PetscMax(steps, 1);
   lp->dt_max     = lp->dt_initial;
   lp->dt_min     = lp->dt_initial / 1024;
   PetscCall(PetscOptionsReal("-load_max_increment", "Largest load-factor increment a step may grow to", "", lp->dt_max, &lp->dt_max, NULL));
@@ -23,6 +22,7 @@ PetscErrorCode IndLoadPathSetFromOptions(MPI_Comm comm, IndLoadPath *lp)
   PetscCall(PetscOptionsInt("-load_easy_its", "Newton iterations at or below which a step is easy", "", lp->easy_its, &lp->easy_its, NULL));
   PetscCall(PetscOptionsInt("-load_max_cutbacks", "Failed attempts in a row before the run stops", "", lp->max_cutbacks, &lp->max_cutbacks, NULL));
   PetscOptionsEnd();
+  PetscCheck(steps >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-load_steps must be >= 1, got %" PetscInt_FMT, steps);
   PetscCheck(lp->dt_max > 0 && lp->dt_max <= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-load_max_increment must lie in (0, 1], got %g", (double)lp->dt_max);
   PetscCheck(lp->dt_min > 0 && lp->dt_min <= lp->dt_initial, comm, PETSC_ERR_ARG_OUTOFRANGE, "-load_min_increment must lie in (0, 1/-load_steps = %g], got %g", (double)lp->dt_initial, (double)lp->dt_min);
   PetscCheck(lp->cutback > 0 && lp->cutback < 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-load_cutback must lie in (0, 1), got %g", (double)lp->cutback);

@@ -1,0 +1,54 @@
+static const char help[] = "Unit test of the adaptive load stepping: exact end point, cutback, growth, and the errors.\n";
+
+#include "ind_loadpath.h"
+
+#define EXPECT(cond, ...) PetscCheck(cond, PETSC_COMM_SELF, PETSC_ERR_PLIB, __VA_ARGS__)
+
+int main(int argc, char **argv)
+{
+  IndLoadPath    lp;
+  PetscErrorCode err;
+  PetscInt       n = 0;
+
+  PetscCall(PetscInitialize(&argc, &argv, NULL, help));
+  /* Ten equal steps end exactly at 1, although 10 * 0.1 is not 1 in floating point. */
+  PetscCall(PetscOptionsSetValue(NULL, "-load_steps", "10"));
+  PetscCall(IndLoadPathSetFromOptions(PETSC_COMM_SELF, &lp));
+  while (!IndLoadPathDone(&lp)) {
+    IndLoadPathAccept(&lp, 10);
+    n++;
+  }
+  EXPECT(n == 10 && lp.t == 1.0, "10 steps of 0.1: %" PetscInt_FMT " steps, end %.17g", n, (double)lp.t);
+
+  /* A failure halves the increment; easy steps grow it by 1.5 up to the initial increment. */
+  PetscCall(IndLoadPathSetFromOptions(PETSC_COMM_SELF, &lp));
+  PetscCall(IndLoadPathReject(&lp, PETSC_COMM_SELF, "test"));
+  EXPECT(PetscAbsReal(IndLoadPathTarget(&lp) - 0.05) < 1e-15, "after a cutback the target is %g, not 0.05", (double)IndLoadPathTarget(&lp));
+  IndLoadPathAccept(&lp, 2);
+  EXPECT(PetscAbsReal(lp.dt - 0.075) < 1e-15, "an easy step grows 0.05 to %g, not 0.075", (double)lp.dt);
+  IndLoadPathAccept(&lp, 2);
+  EXPECT(PetscAbsReal(lp.dt - 0.1) < 1e-15, "growth is capped at the initial increment: %g", (double)lp.dt);
+  IndLoadPathAccept(&lp, 20);
+  EXPECT(PetscAbsReal(lp.dt - 0.1) < 1e-15 && lp.cutbacks == 1 && lp.cutbacks_in_a_row == 0, "a hard step keeps the increment");
+
+  /* Ten cutbacks in a row reach -load_min_increment (initial / 1024); the eleventh is an error. */
+  PetscCall(IndLoadPathSetFromOptions(PETSC_COMM_SELF, &lp));
+  PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
+  for (n = 0; n < 10; ++n) PetscCall(IndLoadPathReject(&lp, PETSC_COMM_SELF, "test"));
+  err = IndLoadPathReject(&lp, PETSC_COMM_SELF, "test");
+  EXPECT(err == PETSC_ERR_NOT_CONVERGED, "the 11th cutback in a row must fail, returned %d", (int)err);
+
+  /* Non-physical settings are refused. */
+  PetscCall(PetscOptionsSetValue(NULL, "-load_growth", "0.5"));
+  err = IndLoadPathSetFromOptions(PETSC_COMM_SELF, &lp);
+  EXPECT(err == PETSC_ERR_ARG_OUTOFRANGE, "-load_growth 0.5 must be refused");
+  PetscCall(PetscOptionsClearValue(NULL, "-load_growth"));
+  PetscCall(PetscOptionsSetValue(NULL, "-load_steps", "0"));
+  err = IndLoadPathSetFromOptions(PETSC_COMM_SELF, &lp);
+  EXPECT(err == PETSC_ERR_ARG_OUTOFRANGE, "-load_steps 0 must be refused");
+  PetscCall(PetscPopErrorHandler());
+  PetscCall(PetscOptionsClearValue(NULL, "-load_steps"));
+  PetscCall(PetscPrintf(PETSC_COMM_SELF, "load path: end point, cutback, growth, cap and error paths behave\n"));
+  PetscCall(PetscFinalize());
+  return 0;
+}
