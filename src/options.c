@@ -7,7 +7,7 @@ static const char *lazy_prefixes[] = {"log", "options_", "malloc", "memory_view"
                                       "on_error", "mat_mumps_", "mat_superlu", "mat_view", "vec_view", "ksp_view", "snes_view",
                                       "pc_view", "dm_view", "check_pointer", "fp_trap", "viewer_", "mpi_", "use_gpu", "skip_petscrc",
                                       "objects_dump", "display", "nox", "x_", "draw_", "petscpartitioner_view",
-                                      "ksp_converged_reason", "snes_converged_reason", "mg_levels_", "mg_coarse_", "pc_hypre_boomeramg_print", NULL};
+                                      "ksp_converged_reason", "snes_converged_reason", "snes_test_", "mg_levels_", "mg_coarse_", "pc_hypre_boomeramg_print", NULL};
 
 PetscErrorCode IndOptionsCheckUnused(MPI_Comm comm)
 {
