@@ -124,9 +124,9 @@ PetscErrorCode IndSolverPredict(IndSolver s, PetscReal t_old, PetscReal t_new, V
 
   PetscFunctionBeginUser;
   PetscCall(IndBCSetUp(s->bc));
-  PetscCall(VecDuplicate(U, &G));
-  PetscCall(VecDuplicate(U, &r));
-  PetscCall(VecDuplicate(U, &du));
+  PetscCall(DMGetGlobalVector(s->dm, &G));
+  PetscCall(DMGetGlobalVector(s->dm, &r));
+  PetscCall(DMGetGlobalVector(s->dm, &du));
   /* The tangent at the accepted state, before the boundary conditions zero its constrained columns:
      those columns times the increment of the prescribed values are the linearised load. */
   s->load_factor = t_old;
@@ -147,9 +147,9 @@ PetscErrorCode IndSolverPredict(IndSolver s, PetscReal t_old, PetscReal t_new, V
   /* A failed predictor only costs Newton iterations: fall back to the prescribed values alone. */
   if (reason > 0) PetscCall(VecAXPY(U, 1.0, du));
   PetscCall(VecAXPY(U, 1.0, G));
-  PetscCall(VecDestroy(&G));
-  PetscCall(VecDestroy(&r));
-  PetscCall(VecDestroy(&du));
+  PetscCall(DMRestoreGlobalVector(s->dm, &G));
+  PetscCall(DMRestoreGlobalVector(s->dm, &r));
+  PetscCall(DMRestoreGlobalVector(s->dm, &du));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -158,9 +158,9 @@ PetscErrorCode IndSolverEvaluate(IndSolver s, Vec U)
   Vec F;
 
   PetscFunctionBeginUser;
-  PetscCall(VecDuplicate(U, &F));
+  PetscCall(DMGetGlobalVector(s->dm, &F));
   PetscCall(FormResidual(NULL, U, F, s));
-  PetscCall(VecDestroy(&F));
+  PetscCall(DMRestoreGlobalVector(s->dm, &F));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
