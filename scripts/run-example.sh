@@ -6,5 +6,5 @@ top=$(cd "$(dirname "$0")/.." && pwd)
 "$top/scripts/build.sh"
 . "$top/scripts/mpi-env.sh"
 cd "$top"
-mpiexec -n 2 "${BUILD_DIR:-$top/build}/indent" -options_file inputs/elastic_block.opts "$@"
-echo "Output: indent.xdmf (open in ParaView) and indent.h5 in -output_dir (inputs/elastic_block.opts: output/elastic_block)"
+mpiexec -n 2 "${BUILD_DIR:-$top/build}/indent" -options_file inputs/plastic_block.opts "$@"
+echo "Output: indent.xdmf (open in ParaView) and indent.h5 in -output_dir (inputs/plastic_block.opts: output/plastic_block)"
