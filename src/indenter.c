@@ -1,0 +1,265 @@
+#include <math.h>
+#include "ind_indenter.h"
+
+const char *const IndIndenterTypes[] = {"sphere", "cone", "berkovich", "vickers", "cube_corner", "flat", "IndIndenterType", "IND_INDENTER_", NULL};
+
+static const PetscReal deg = PETSC_PI / 180.0;
+
+int IndIndenterSetUp(IndIndenter *ind)
+{
+  PetscReal standard = 0;
+
+  ind->nfaces = 0;
+  switch (ind->type) {
+  case IND_INDENTER_BERKOVICH:
+    ind->nfaces = 3;
+    standard    = 65.27 * deg;
+    break;
+  case IND_INDENTER_VICKERS:
+    ind->nfaces = 4;
+    standard    = 68.0 * deg;
+    break;
+  case IND_INDENTER_CUBE_CORNER:
+    ind->nfaces = 3;
+    standard    = 35.26 * deg;
+    break;
+  case IND_INDENTER_CONE:
+    standard = 70.3 * deg;
+    break;
+  default:
+    break;
+  }
+  if (ind->angle == 0) ind->angle = standard;
+  if (ind->radius < 0) return 1;
+  if ((ind->type == IND_INDENTER_SPHERE || ind->type == IND_INDENTER_FLAT) && !(ind->radius > 0)) return 1;
+  if (ind->type != IND_INDENTER_SPHERE && ind->type != IND_INDENTER_FLAT && !(ind->angle > 0 && ind->angle < 0.5 * PETSC_PI)) return 1;
+  for (PetscInt i = 0; i < ind->nfaces; ++i) {
+    const PetscReal phi = ind->rotation + 2.0 * PETSC_PI * i / ind->nfaces;
+    ind->m[i][0]        = PetscCosReal(ind->angle) * PetscCosReal(phi);
+    ind->m[i][1]        = PetscCosReal(ind->angle) * PetscSinReal(phi);
+    ind->m[i][2]        = -PetscSinReal(ind->angle);
+  }
+  return 0;
+}
+
+static inline PetscReal Dot(const PetscReal a[3], const PetscReal b[3])
+{
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+static inline void Normalize(PetscReal v[3])
+{
+  const PetscReal l = PetscSqrtReal(Dot(v, v));
+  for (int k = 0; k < 3; ++k) v[k] /= l;
+}
+
+/* Distance from the point y (relative to the apex) to a sharp cone opening upwards, half-angle a. */
+static void ConeCore(PetscReal a, const PetscReal y[3], PetscReal *d, PetscReal n[3])
+{
+  const PetscReal r = PetscSqrtReal(y[0] * y[0] + y[1] * y[1]), h = y[2];
+  const PetscReal er[2] = {r > 0 ? y[0] / r : 1.0, r > 0 ? y[1] / r : 0.0};
+
+  if (r * PetscSinReal(a) + h * PetscCosReal(a) >= 0) { /* closest point on the mantle */
+    *d   = r * PetscCosReal(a) - h * PetscSinReal(a);
+    n[0] = PetscCosReal(a) * er[0];
+    n[1] = PetscCosReal(a) * er[1];
+    n[2] = -PetscSinReal(a);
+  } else { /* below the apex's normal cone: the apex is closest */
+    *d = PetscSqrtReal(Dot(y, y));
+    for (int k = 0; k < 3; ++k) n[k] = y[k] / *d;
+  }
+}
+
+/* Signed distance from y (relative to the apex) to the sharp pyramid {y : y.m_i <= 0}: inside, the
+   nearest face plane; outside, the nearest of the feasible projections on faces, edges and apex. */
+static void PyramidCore(const IndIndenter *ind, const PetscReal y[3], PetscReal *d, PetscReal n[3])
+{
+  const PetscInt nf = ind->nfaces;
+  PetscReal      s[IND_INDENTER_MAX_FACES], smax = -PETSC_MAX_REAL, best = PETSC_MAX_REAL, p[3];
+  PetscInt       imax = 0;
+
+  for (PetscInt i = 0; i < nf; ++i) {
+    s[i] = Dot(y, ind->m[i]);
+    if (s[i] > smax) {
+      smax = s[i];
+      imax = i;
+    }
+  }
+  if (smax <= 0) {
+    *d = smax;
+    for (int k = 0; k < 3; ++k) n[k] = ind->m[imax][k];
+    return;
+  }
+  /* The apex is always feasible. */
+  best = PetscSqrtReal(Dot(y, y));
+  for (int k = 0; k < 3; ++k) p[k] = 0.0;
+  for (PetscInt i = 0; i < nf; ++i) {
+    const PetscInt j = (i + 1) % nf;
+    PetscReal      q[3], e[3], t, dist;
+    PetscBool      feasible = PETSC_TRUE;
+
+    if (s[i] > 0) { /* foot of the perpendicular on face i's plane */
+      for (int k = 0; k < 3; ++k) q[k] = y[k] - s[i] * ind->m[i][k];
+      for (PetscInt l = 0; l < nf && feasible; ++l)
+        if (l != i && Dot(q, ind->m[l]) > 1e-14 * (PetscAbsReal(s[i]) + PetscSqrtReal(Dot(y, y)))) feasible = PETSC_FALSE;
+      if (feasible && s[i] < best) {
+        best = s[i];
+        for (int k = 0; k < 3; ++k) p[k] = q[k];
+      }
+    }
+    /* The edge between faces i and j, a ray from the apex upwards. */
+    e[0] = ind->m[i][1] * ind->m[j][2] - ind->m[i][2] * ind->m[j][1];
+    e[1] = ind->m[i][2] * ind->m[j][0] - ind->m[i][0] * ind->m[j][2];
+    e[2] = ind->m[i][0] * ind->m[j][1] - ind->m[i][1] * ind->m[j][0];
+    Normalize(e);
+    if (e[2] < 0)
+      for (int k = 0; k < 3; ++k) e[k] = -e[k];
+    t = Dot(y, e);
+    if (t > 0) {
+      for (int k = 0; k < 3; ++k) q[k] = t * e[k];
+      dist = PetscSqrtReal(PetscSqr(y[0] - q[0]) + PetscSqr(y[1] - q[1]) + PetscSqr(y[2] - q[2]));
+      if (dist < best) {
+        best = dist;
+        for (int k = 0; k < 3; ++k) p[k] = q[k];
+      }
+    }
+  }
+  *d = best;
+  for (int k = 0; k < 3; ++k) n[k] = y[k] - p[k];
+  Normalize(n);
+}
+
+static void FlatPunch(const IndIndenter *ind, const PetscReal y[3], PetscReal *d, PetscReal n[3])
+{
+  const PetscReal a = ind->radius, r = PetscSqrtReal(y[0] * y[0] + y[1] * y[1]), h = y[2];
+  const PetscReal er[2] = {r > 0 ? y[0] / r : 1.0, r > 0 ? y[1] / r : 0.0};
+
+  n[0] = n[1] = n[2] = 0.0;
+  if (r <= a && h >= 0) { /* inside: the nearer of face and mantle */
+    if (h <= a - r) {
+      *d   = -h;
+      n[2] = -1.0;
+    } else {
+      *d   = r - a;
+      n[0] = er[0];
+      n[1] = er[1];
+    }
+  } else if (r <= a) {
+    *d   = -h;
+    n[2] = -1.0;
+  } else if (h >= 0) {
+    *d   = r - a;
+    n[0] = er[0];
+    n[1] = er[1];
+  } else {
+    *d   = PetscSqrtReal(PetscSqr(r - a) + h * h);
+    n[0] = (r - a) * er[0] / *d;
+    n[1] = (r - a) * er[1] / *d;
+    n[2] = h / *d;
+  }
+}
+
+void IndIndenterGap(const IndIndenter *ind, const PetscReal x[3], PetscReal *gap, PetscReal n[3])
+{
+  const PetscReal lowest = ind->surface - ind->depth;
+  PetscReal       y[3], d;
+
+  if (ind->type == IND_INDENTER_FLAT) {
+    y[0] = x[0] - ind->axis[0];
+    y[1] = x[1] - ind->axis[1];
+    y[2] = x[2] - lowest;
+    FlatPunch(ind, y, gap, n);
+    return;
+  }
+  /* Relative to the core's apex, tip_radius above the lowest point. */
+  y[0] = x[0] - ind->axis[0];
+  y[1] = x[1] - ind->axis[1];
+  y[2] = x[2] - (lowest + ind->radius);
+  switch (ind->type) {
+  case IND_INDENTER_SPHERE:
+    d = PetscSqrtReal(Dot(y, y));
+    if (d > 0)
+      for (int k = 0; k < 3; ++k) n[k] = y[k] / d;
+    else n[0] = n[1] = 0, n[2] = -1;
+    break;
+  case IND_INDENTER_CONE:
+    ConeCore(ind->angle, y, &d, n);
+    break;
+  default:
+    PyramidCore(ind, y, &d, n);
+  }
+  *gap = d - ind->radius;
+}
+
+void IndIndenterTangents(const PetscReal n[3], PetscReal t1[3], PetscReal t2[3])
+{
+  /* t1 along the projection of x on the tangent plane, or of z when n is nearly along x. */
+  const PetscReal e[3] = {PetscAbsReal(n[0]) < 0.9 ? 1.0 : 0.0, 0.0, PetscAbsReal(n[0]) < 0.9 ? 0.0 : 1.0};
+  const PetscReal en   = Dot(e, n);
+  for (int k = 0; k < 3; ++k) t1[k] = e[k] - en * n[k];
+  Normalize(t1);
+  t2[0] = n[1] * t1[2] - n[2] * t1[1];
+  t2[1] = n[2] * t1[0] - n[0] * t1[2];
+  t2[2] = n[0] * t1[1] - n[1] * t1[0];
+}
+
+/* Distance from the axis to the section's boundary along azimuth phi at height z (absolute). */
+static PetscReal SectionRadius(const IndIndenter *ind, PetscReal phi, PetscReal z)
+{
+  PetscReal lo = 0, hi = ind->radius + 1.0, g, n[3], x[3];
+
+  x[2] = z;
+  for (int it = 0; it < 200; ++it) { /* grow until outside */
+    x[0] = ind->axis[0] + hi * PetscCosReal(phi);
+    x[1] = ind->axis[1] + hi * PetscSinReal(phi);
+    IndIndenterGap(ind, x, &g, n);
+    if (g > 0) break;
+    lo = hi;
+    hi *= 2;
+  }
+  for (int it = 0; it < 200 && hi - lo > 1e-15 * hi; ++it) {
+    const PetscReal mid = 0.5 * (lo + hi);
+    x[0]                = ind->axis[0] + mid * PetscCosReal(phi);
+    x[1]                = ind->axis[1] + mid * PetscSinReal(phi);
+    IndIndenterGap(ind, x, &g, n);
+    if (g > 0) hi = mid;
+    else lo = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+PetscReal IndIndenterArea(const IndIndenter *ind, PetscReal hc)
+{
+  const PetscReal R = ind->radius, a = ind->angle;
+
+  if (hc <= 0) return 0.0;
+  switch (ind->type) {
+  case IND_INDENTER_FLAT:
+    return PETSC_PI * R * R;
+  case IND_INDENTER_SPHERE:
+    return hc >= R ? PETSC_PI * R * R : PETSC_PI * (2 * R * hc - hc * hc);
+  case IND_INDENTER_CONE: {
+    const PetscReal ht = R * (1 - PetscSinReal(a)); /* where the tip sphere meets the mantle */
+    if (hc <= ht) return PETSC_PI * (2 * R * hc - hc * hc);
+    return PETSC_PI * PetscSqr(R * PetscCosReal(a) + (hc - ht) * PetscTanReal(a));
+  }
+  default:
+    break;
+  }
+  if (R == 0) return ind->nfaces * PetscTanReal(PETSC_PI / ind->nfaces) * PetscSqr(hc * PetscTanReal(a));
+  {
+    /* A = 1/2 int r(phi)^2 dphi over the convex section, by 5-point Gauss-Legendre on sub-intervals of
+       the 2 nfaces sectors between face and edge azimuths, where r(phi) is smooth piecewise. */
+    const PetscReal xg[5] = {-0.9061798459386640, -0.5384693101056831, 0.0, 0.5384693101056831, 0.9061798459386640};
+    const PetscReal wg[5] = {0.2369268850561891, 0.4786286704993665, 0.5688888888888889, 0.4786286704993665, 0.2369268850561891};
+    const PetscInt  nsub = 64, nsec = 2 * ind->nfaces;
+    const PetscReal z = ind->surface - ind->depth + hc, width = 2 * PETSC_PI / nsec;
+    PetscReal       A = 0;
+    for (PetscInt s = 0; s < nsec; ++s)
+      for (PetscInt k = 0; k < nsub; ++k) {
+        const PetscReal p0 = ind->rotation + s * width + k * width / nsub, hw = 0.5 * width / nsub;
+        for (int q = 0; q < 5; ++q) A += hw * wg[q] * 0.5 * PetscSqr(SectionRadius(ind, p0 + hw * (1 + xg[q]), z));
+      }
+    return A;
+  }
+}
