@@ -9,6 +9,7 @@
 #include "ind_output.h"
 #include "ind_history.h"
 #include "ind_loadpath.h"
+#include "ind_contact.h"
 
 /* How each step's Newton iteration starts: from the last increment extrapolated when there is one
    (else the tangent response), always from the tangent response, or from the prescribed values alone. */
@@ -17,12 +18,16 @@ extern const char *const IndPredictorTypes[];
 
 /* What one attempt at a load step did. */
 typedef struct {
-  PetscReal           t;         /* load factor aimed at */
-  PetscBool           converged; /* accepted: history committed; otherwise U and history unchanged */
+  PetscReal           t;         /* pseudo-time of the load program aimed at */
+  PetscReal           lambda;    /* its load factor */
+  PetscReal           depth;     /* indenter depth, nm (0 without an indenter) */
+  PetscBool           converged; /* accepted: history and contact committed; otherwise nothing changed */
   SNESConvergedReason reason;
-  PetscInt            newton, linear;
+  PetscInt            newton, linear, outer;
   PetscInt            plastic; /* yielding quadrature points at the converged state, all ranks */
   PetscInt            failed;  /* quadrature points whose return map failed, last residual */
+  IndContactSummary   contact;
+  char                why[256];
   PetscLogDouble      seconds;
 } IndStepResult;
 
@@ -36,13 +41,14 @@ struct _p_IndApp {
   IndMaterials mats;
   IndHistory   history;
   IndBC        bc;
+  IndContact   contact; /* NULL without an indenter */
   IndAssembly  assembly;
   IndSolver    solver;
   IndOutput    output;
   Vec          U;     /* displacement (nm), global */
   Vec          Uprev; /* U of the last accepted step, to retry from */
   Vec          dU;    /* increment of the last accepted step, for the predictor */
-  PetscReal    dt_last; /* its load-factor increment; 0 before the first step */
+  PetscReal    dlambda_last; /* its load-factor increment; 0 before the first step */
   IndPredictor predictor;
   IndLoadPath  path;
   PetscBool    quiet;
@@ -57,8 +63,8 @@ PetscErrorCode IndAppSetBodyForce(IndApp app, IndVectorFn fn, void *ctx);
 PetscErrorCode IndAppAddBoundaryFunction(IndApp app, const char surface[], PetscInt mask, IndVectorFn fn, void *ctx);
 /* Called after every accepted step of IndAppRun, after its output. */
 PetscErrorCode IndAppSetStepMonitor(IndApp app, IndStepMonitor fn, void *ctx);
-/* One attempt from the current state to load factor t: on convergence the trial history is
-   committed; otherwise U is restored and nothing changes. */
+/* One attempt from the current state to pseudo-time t of the load program: on convergence the trial
+   history and the contact state are committed; otherwise U is restored and nothing changes. */
 PetscErrorCode IndAppSolveStep(IndApp app, PetscReal t, IndStepResult *step);
 /* Applies the load from 0 to 1 in adaptive steps (-load_steps and friends), writing output after each. */
 PetscErrorCode IndAppRun(IndApp app);

@@ -14,6 +14,7 @@ typedef struct {
   char        option[32];   /* the option that asked for it, for messages */
   PetscInt    mask;         /* bit c set: component c constrained */
   PetscReal   value[3];     /* nm, at full load (constant conditions) */
+  PetscReal   plane;        /* symmetry planes: the coordinate along their normal axis */
   IndVectorFn fn;           /* or a function of position, nm at full load */
   void       *ctx;
 } IndBCSpec;

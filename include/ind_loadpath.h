@@ -1,12 +1,20 @@
 #pragma once
-/* Adaptive stepping of the load factor t from 0 to 1: a failed step (Newton or return map) is cut
-   back and retried, an easy one lets the next increment grow back. Plain data, so the whole stepping
-   state can be saved with the rest of the run. */
+/* The load program and its adaptive stepping. A pseudo-time t runs over the program's segments:
+   loading for t in [0, 1], an optional hold of length -load_hold, an optional unloading of length 1;
+   the load factor lambda(t) goes 0 -> 1, stays at 1, goes back to 0. Prescribed displacements are
+   lambda times their values and the indenter's depth is lambda times -load_depth. A failed step
+   (Newton, return map or contact loop) is cut back and retried, an easy one lets the next increment
+   grow back; steps end exactly on the segments' ends. Plain data, so the whole stepping state can be
+   saved with the rest of the run. */
 #include <petscsys.h>
 #include "ind_common.h"
 
 typedef struct {
-  PetscReal t;          /* load factor of the last accepted step */
+  PetscReal t;          /* pseudo-time of the last accepted step */
+  PetscReal hold;       /* length of the hold segment (0: none) */
+  PetscBool unload;     /* whether the program unloads */
+  PetscReal t_end;      /* 1 + hold (+ 1 when unloading) */
+  PetscReal depth_max;  /* -load_depth, nm (0: no indenter) */
   PetscReal dt;         /* increment of the next attempt */
   PetscReal dt_initial; /* 1 / -load_steps */
   PetscReal dt_min, dt_max;
@@ -17,7 +25,14 @@ typedef struct {
   PetscInt  accepted, cutbacks, cutbacks_in_a_row;
 } IndLoadPath;
 
-PetscErrorCode IndLoadPathSetFromOptions(MPI_Comm comm, IndLoadPath *path);
+/* unload_default: whether the program unloads unless -load_unload says otherwise (an indentation does). */
+PetscErrorCode IndLoadPathSetFromOptions(MPI_Comm comm, PetscBool unload_default, IndLoadPath *path);
+/* lambda(t) of the program. */
+PetscReal      IndLoadPathFactor(const IndLoadPath *path, PetscReal t);
+/* Whether t lies in the unloading segment. */
+PetscBool      IndLoadPathUnloading(const IndLoadPath *path, PetscReal t);
+/* Ends the program now (the indenter has left the surface during unloading). */
+void           IndLoadPathFinish(IndLoadPath *path);
 PetscBool      IndLoadPathDone(const IndLoadPath *path);
 /* The load factor the next attempt should reach. */
 PetscReal      IndLoadPathTarget(const IndLoadPath *path);

@@ -10,11 +10,22 @@
 
 #define IND_MAX_OUTPUT_STEPS 100000
 
+/* One line of the load-displacement curve, <output_dir>/load_displacement.csv. */
+typedef struct {
+  PetscInt       step;
+  PetscReal      t, depth, load; /* pseudo-time, nm, uN */
+  PetscInt       contact, stick, slip, newton, outer, linear, cutbacks;
+  PetscReal      penetration, area; /* nm, nm^2 */
+  PetscLogDouble seconds;
+} IndCurvePoint;
+
 typedef struct _p_IndOutput *IndOutput;
 struct _p_IndOutput {
   IndMesh     mesh;
   IndDisc     disc;
   PetscBool   enabled;
+  PetscBool   curve;   /* -output_curve */
+  FILE       *csv;     /* rank 0, opened at the first point */
   char        dir[PETSC_MAX_PATH_LEN];
   char        h5name[PETSC_MAX_PATH_LEN];
   PetscViewer viewer;
@@ -28,5 +39,7 @@ struct _p_IndOutput {
 
 PetscErrorCode IndOutputCreate(IndMesh mesh, IndDisc disc, IndOutput *out);
 PetscErrorCode IndOutputDestroy(IndOutput *out);
+/* Appends a line to the curve (rank 0 writes; flushed at once, so a killed run keeps its curve). */
+PetscErrorCode IndOutputCurvePoint(IndOutput out, const IndCurvePoint *point);
 /* Appends one step (time = load factor, or indenter depth later) to the HDF5 file and rewrites the XDMF. */
 PetscErrorCode IndOutputWriteStep(IndOutput out, PetscReal time, Vec U, IndAssembly assembly);

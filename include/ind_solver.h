@@ -1,15 +1,27 @@
 #pragma once
 /* One load step: Newton (SNES) on the assembled residual with Dirichlet rows, CG + GAMG with the
-   rigid-body near-null space by default; every choice can be changed by PETSc options. */
+   rigid-body near-null space by default (every choice can be changed by PETSc options), inside the
+   outer Uzawa loop of the contact when there is an indenter. */
 #include <petscsnes.h>
 #include "ind_assembly.h"
 #include "ind_bc.h"
+#include "ind_contact.h"
+
+/* What one load step's solve did. */
+typedef struct {
+  PetscBool           converged;
+  SNESConvergedReason reason; /* of the last Newton solve */
+  PetscInt            newton, linear, outer; /* summed over the outer iterations */
+  IndContactSummary   contact;              /* after the last outer update */
+  char                why[256];             /* why it failed */
+} IndSolveResult;
 
 typedef struct _p_IndSolver *IndSolver;
 struct _p_IndSolver {
   DM           dm;
   IndAssembly  assembly;
   IndBC        bc;
+  IndContact   contact; /* NULL without an indenter */
   SNES         snes;
   Mat          J;
   Vec          Uloc, Floc, Ubc;
@@ -18,7 +30,8 @@ struct _p_IndSolver {
   PetscInt     nplastic;    /* quadrature points, all ranks, yielding in the last residual */
 };
 
-PetscErrorCode IndSolverCreate(DM dm, IndAssembly assembly, IndBC bc, IndSolver *solver);
+/* depth_max sets the contact loop's penetration tolerance. */
+PetscErrorCode IndSolverCreate(DM dm, IndAssembly assembly, IndBC bc, IndContact contact, PetscReal depth_max, IndSolver *solver);
 PetscErrorCode IndSolverDestroy(IndSolver *solver);
 /* Tangent predictor for a step from load factor t_old (U converged there) to t_new: adds the
    prescribed-value increment and the response of the tangent at U to it, so that an elastic step
@@ -27,5 +40,5 @@ PetscErrorCode IndSolverPredict(IndSolver solver, PetscReal t_old, PetscReal t_n
 /* Evaluates the residual at U (load factor of the last solve): leaves the trial history consistent
    with U, whatever iterate SNES evaluated last. */
 PetscErrorCode IndSolverEvaluate(IndSolver solver, Vec U);
-/* Solves for U at the given load factor; U holds the initial guess. */
-PetscErrorCode IndSolverSolve(IndSolver solver, PetscReal load_factor, Vec U, SNESConvergedReason *reason);
+/* Solves for U at the given load factor (and the indenter's current depth); U holds the initial guess. */
+PetscErrorCode IndSolverSolve(IndSolver solver, PetscReal load_factor, Vec U, IndSolveResult *result);

@@ -16,16 +16,20 @@ PetscErrorCode IndAppCreate(MPI_Comm comm, IndApp *out)
   PetscCall(PetscOptionsEnum("-load_predictor", "Start of each step's Newton iteration", "", IndPredictorTypes, (PetscEnum)app->predictor, (PetscEnum *)&app->predictor, NULL));
   PetscCall(PetscOptionsBool("-quiet", "Print nothing but errors", "", app->quiet, &app->quiet, NULL));
   PetscOptionsEnd();
-  PetscCall(IndLoadPathSetFromOptions(comm, &app->path));
 
   PetscCall(PetscLogStagePush(IndLog.setup));
   PetscCall(IndMeshCreate(comm, &app->mesh));
   PetscCall(IndDiscCreate(app->mesh, &app->disc));
   PetscCall(IndMaterialsCreate(app->mesh, app->disc, &app->mats));
   PetscCall(IndBCCreate(app->mesh, app->disc, &app->bc));
+  PetscCall(IndContactCreate(app->mesh, app->disc, app->bc, &app->contact));
+  /* An indentation unloads by default; a run of prescribed displacements only loads. */
+  PetscCall(IndLoadPathSetFromOptions(comm, app->contact ? PETSC_TRUE : PETSC_FALSE, &app->path));
+  PetscCheck(!app->contact || app->path.depth_max > 0, comm, PETSC_ERR_ARG_WRONG, "-indenter_type needs the largest depth -load_depth (nm) > 0");
+  PetscCheck(app->contact || app->path.depth_max == 0, comm, PETSC_ERR_ARG_WRONG, "-load_depth needs an indenter: -indenter_type");
   PetscCall(IndHistoryCreate(app->disc, &app->history));
   PetscCall(IndAssemblyCreate(app->disc, app->mats, app->history, &app->assembly));
-  PetscCall(IndSolverCreate(app->disc->dm, app->assembly, app->bc, &app->solver));
+  PetscCall(IndSolverCreate(app->disc->dm, app->assembly, app->bc, app->contact, app->path.depth_max, &app->solver));
   PetscCall(IndOutputCreate(app->mesh, app->disc, &app->output));
   PetscCall(DMCreateGlobalVector(app->disc->dm, &app->U));
   PetscCall(PetscObjectSetName((PetscObject)app->U, "displacement"));
@@ -73,32 +77,47 @@ PetscErrorCode IndAppSetStepMonitor(IndApp app, IndStepMonitor fn, void *ctx)
 
 PetscErrorCode IndAppSolveStep(IndApp app, PetscReal t, IndStepResult *r)
 {
-  IndSolver      s = app->solver;
-  PetscLogDouble t0, t1;
+  IndSolver       s          = app->solver;
+  const PetscReal lambda_old = IndLoadPathFactor(&app->path, app->path.t);
+  IndSolveResult  sr;
+  PetscLogDouble  t0, t1;
 
   PetscFunctionBeginUser;
   PetscCall(PetscMemzero(r, sizeof(*r)));
-  r->t = t;
+  r->t      = t;
+  r->lambda = IndLoadPathFactor(&app->path, t);
+  r->depth  = app->path.depth_max * r->lambda;
   PetscCall(PetscTime(&t0));
   PetscCall(PetscLogStagePush(IndLog.solve));
   PetscCall(VecCopy(app->U, app->Uprev));
+  if (app->contact) app->contact->indenter.depth = r->depth;
   /* The prescribed values alone would strain only the boundary layer of cells, which then yields in
-     the first iterate and sends Newton astray; either predictor starts it near the answer. */
-  if (app->predictor == IND_PREDICTOR_EXTRAPOLATE && app->dt_last > 0) PetscCall(VecAXPY(app->U, (t - app->path.t) / app->dt_last, app->dU));
-  else if (app->predictor != IND_PREDICTOR_NONE) PetscCall(IndSolverPredict(s, app->path.t, t, app->U));
-  PetscCall(IndSolverSolve(s, t, app->U, &r->reason));
-  PetscCall(SNESGetIterationNumber(s->snes, &r->newton));
-  PetscCall(SNESGetLinearSolveIterations(s->snes, &r->linear));
+     the first iterate and sends Newton astray; either predictor starts it near the answer. The last
+     increment is scaled by the change of load factor, so a hold starts from the last state and an
+     unloading from the loading increment reversed. */
+  if (app->predictor == IND_PREDICTOR_EXTRAPOLATE && app->dlambda_last != 0) PetscCall(VecAXPY(app->U, (r->lambda - lambda_old) / app->dlambda_last, app->dU));
+  else if (app->predictor != IND_PREDICTOR_NONE) PetscCall(IndSolverPredict(s, lambda_old, r->lambda, app->U));
+  PetscCall(IndSolverSolve(s, r->lambda, app->U, &sr));
+  r->reason    = sr.reason;
+  r->newton    = sr.newton;
+  r->linear    = sr.linear;
+  r->outer     = sr.outer;
+  r->contact   = sr.contact;
   r->failed    = s->nfailed;
-  r->converged = r->reason > 0 ? PETSC_TRUE : PETSC_FALSE;
+  r->converged = sr.converged;
+  PetscCall(PetscStrncpy(r->why, sr.why, sizeof(r->why)));
   if (r->converged) {
     /* SNES may have evaluated the residual last at a line-search trial point, not at U. */
     PetscCall(IndSolverEvaluate(s, app->U));
     r->plastic = s->nplastic;
     PetscCall(IndHistoryCommit(app->history));
+    if (app->contact) PetscCall(IndContactCommit(app->contact, app->U));
     PetscCall(VecWAXPY(app->dU, -1.0, app->Uprev, app->U));
-    app->dt_last = t - app->path.t;
-  } else PetscCall(VecCopy(app->Uprev, app->U));
+    app->dlambda_last = r->lambda - lambda_old;
+  } else {
+    PetscCall(VecCopy(app->Uprev, app->U));
+    if (app->contact) PetscCall(IndContactRollback(app->contact));
+  }
   PetscCall(PetscLogStagePop());
   PetscCall(PetscTime(&t1));
   r->seconds = t1 - t0;
@@ -116,18 +135,26 @@ PetscErrorCode IndAppRun(IndApp app)
 
     PetscCall(IndAppSolveStep(app, t, &r));
     if (!r.converged) {
-      char why[256];
-      if (r.reason == SNES_DIVERGED_FUNCTION_DOMAIN) PetscCall(PetscSNPrintf(why, sizeof(why), "return map failed at %" PetscInt_FMT " quadrature points", r.failed));
-      else PetscCall(PetscSNPrintf(why, sizeof(why), "Newton: %s after %" PetscInt_FMT " iterations", SNESConvergedReasons[r.reason], r.newton));
-      if (!app->quiet) PetscCall(PetscPrintf(app->comm, "  step to load %.6f rejected (%s): cutting the increment\n", (double)t, why));
-      PetscCall(IndLoadPathReject(lp, app->comm, why));
+      if (!app->quiet) PetscCall(PetscPrintf(app->comm, "  step to t = %.6f rejected (%s): cutting the increment\n", (double)t, r.why));
+      PetscCall(IndLoadPathReject(lp, app->comm, r.why));
       continue;
     }
     IndLoadPathAccept(lp, r.newton);
-    if (!app->quiet)
-      PetscCall(PetscPrintf(app->comm, "step %3" PetscInt_FMT "  load %.6f  newton %2" PetscInt_FMT "  linear %4" PetscInt_FMT "  plastic points %7" PetscInt_FMT "  cutbacks %2" PetscInt_FMT "  time %.3f s\n", lp->accepted, (double)t, r.newton, r.linear, r.plastic, lp->cutbacks, r.seconds));
-    PetscCall(IndOutputWriteStep(app->output, t, app->U, app->assembly));
+    if (!app->quiet) {
+      if (app->contact)
+        PetscCall(PetscPrintf(app->comm, "step %3" PetscInt_FMT "  depth %9.4f nm  load %11.5f uN  contact %5" PetscInt_FMT " (slip %5" PetscInt_FMT ")  uzawa %2" PetscInt_FMT "  newton %3" PetscInt_FMT "  linear %5" PetscInt_FMT "  plastic %7" PetscInt_FMT "  cutbacks %2" PetscInt_FMT "  %.2f s\n", lp->accepted, (double)r.depth,
+                              (double)(r.contact.load * 1e-3), r.contact.contact, r.contact.slip, r.outer, r.newton, r.linear, r.plastic, lp->cutbacks, r.seconds));
+      else
+        PetscCall(PetscPrintf(app->comm, "step %3" PetscInt_FMT "  load %.6f  newton %2" PetscInt_FMT "  linear %4" PetscInt_FMT "  plastic points %7" PetscInt_FMT "  cutbacks %2" PetscInt_FMT "  time %.3f s\n", lp->accepted, (double)r.lambda, r.newton, r.linear, r.plastic, lp->cutbacks, r.seconds));
+    }
+    PetscCall(IndOutputWriteStep(app->output, app->contact ? r.depth : r.lambda, app->U, app->assembly));
+    if (app->contact) {
+      IndCurvePoint p = {lp->accepted, r.t, r.depth, r.contact.load * 1e-3, r.contact.contact, r.contact.stick, r.contact.slip, r.newton, r.outer, r.linear, lp->cutbacks, r.contact.penetration, r.contact.area, r.seconds};
+      PetscCall(IndOutputCurvePoint(app->output, &p));
+    }
     if (app->monitor) PetscCall(app->monitor(app, &r, app->monitor_ctx));
+    /* Unloading ends once the indenter has left the surface. */
+    if (app->contact && IndLoadPathUnloading(lp, t) && r.contact.contact == 0) IndLoadPathFinish(lp);
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -143,6 +170,7 @@ PetscErrorCode IndAppDestroy(IndApp *app)
   PetscCall(IndSolverDestroy(&(*app)->solver));
   PetscCall(IndAssemblyDestroy(&(*app)->assembly));
   PetscCall(IndHistoryDestroy(&(*app)->history));
+  PetscCall(IndContactDestroy(&(*app)->contact));
   PetscCall(IndBCDestroy(&(*app)->bc));
   PetscCall(IndMaterialsDestroy(&(*app)->mats));
   PetscCall(IndDiscDestroy(&(*app)->disc));

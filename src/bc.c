@@ -30,13 +30,14 @@ static PetscErrorCode ParseComponents(MPI_Comm comm, const char option[], const 
 }
 
 /* The axis normal to every face of a symmetry plane; only axis-aligned planes are supported. */
-static PetscErrorCode SymmetryAxis(IndBC bc, const char label[], PetscInt *mask)
+static PetscErrorCode SymmetryAxis(IndBC bc, const char label[], PetscInt *mask, PetscReal *plane)
 {
   DM       dm = bc->mesh->dm;
   MPI_Comm comm = PetscObjectComm((PetscObject)dm);
   DMLabel  l;
   IS       faces;
   PetscInt axes = 0, skew = 0;
+  PetscReal where = PETSC_MAX_REAL;
 
   PetscFunctionBeginUser;
   PetscCall(IndMeshGetRegionLabel(bc->mesh, label, 2, "-bc_symmetry", &l));
@@ -55,12 +56,15 @@ static PetscErrorCode SymmetryAxis(IndBC bc, const char label[], PetscInt *mask)
         if (PetscAbsReal(normal[e]) > PetscAbsReal(normal[d])) d = e;
       if (PetscAbsReal(normal[d]) < (1.0 - 1e-8) * len) skew++;
       axes |= 1 << d;
+      where = PetscMin(where, centroid[d]);
     }
     PetscCall(ISRestoreIndices(faces, &f));
     PetscCall(ISDestroy(&faces));
   }
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &axes, 1, MPIU_INT, MPI_BOR, comm));
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &skew, 1, MPIU_INT, MPI_SUM, comm));
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &where, 1, MPIU_REAL, MPIU_MIN, comm));
+  *plane = where;
   PetscCheck(axes, comm, PETSC_ERR_ARG_WRONG, "-bc_symmetry: surface '%s' has no faces", label);
   PetscCheck(!skew && (axes == 1 || axes == 2 || axes == 4), comm, PETSC_ERR_SUP, "-bc_symmetry: surface '%s' is not a plane normal to x, y or z", label);
   *mask = axes;
@@ -96,9 +100,11 @@ PetscErrorCode IndBCCreate(IndMesh mesh, IndDisc disc, IndBC *out)
     PetscCall(AddSpec(bc, fixed[i], "-bc_fixed", 7, NULL, NULL, NULL));
   }
   for (PetscInt i = 0; i < nsym; ++i) {
-    PetscInt mask = 0;
-    PetscCall(SymmetryAxis(bc, sym[i], &mask));
+    PetscInt  mask = 0;
+    PetscReal plane = 0;
+    PetscCall(SymmetryAxis(bc, sym[i], &mask, &plane));
     PetscCall(AddSpec(bc, sym[i], "-bc_symmetry", mask, NULL, NULL, NULL));
+    bc->spec[bc->nspec - 1].plane = plane;
   }
   for (PetscInt i = 0; i < nroller; ++i) {
     char   *colon = strchr(roller[i], ':');

@@ -1,6 +1,6 @@
 #include "ind_loadpath.h"
 
-PetscErrorCode IndLoadPathSetFromOptions(MPI_Comm comm, IndLoadPath *lp)
+PetscErrorCode IndLoadPathSetFromOptions(MPI_Comm comm, PetscBool unload_default, IndLoadPath *lp)
 {
   PetscInt steps = 1;
 
@@ -10,7 +10,11 @@ PetscErrorCode IndLoadPathSetFromOptions(MPI_Comm comm, IndLoadPath *lp)
   lp->growth       = 1.5;
   lp->easy_its     = 5;
   lp->max_cutbacks = 10;
+  lp->unload       = unload_default;
   PetscOptionsBegin(comm, NULL, "Load stepping", "Load");
+  PetscCall(PetscOptionsReal("-load_depth", "Largest indenter depth (nm), reached at the end of loading", "", lp->depth_max, &lp->depth_max, NULL));
+  PetscCall(PetscOptionsReal("-load_hold", "Length of the hold at full load, in units of the loading segment", "", lp->hold, &lp->hold, NULL));
+  PetscCall(PetscOptionsBool("-load_unload", "Unload after loading (and holding)", "", lp->unload, &lp->unload, NULL));
   PetscCall(PetscOptionsInt("-load_steps", "Number of load steps when none is cut back", "", steps, &steps, NULL));
   lp->dt_initial = 1.0 / PetscMax(steps, 1);
   lp->dt_max     = lp->dt_initial;
@@ -23,6 +27,9 @@ PetscErrorCode IndLoadPathSetFromOptions(MPI_Comm comm, IndLoadPath *lp)
   PetscCall(PetscOptionsInt("-load_max_cutbacks", "Failed attempts in a row before the run stops", "", lp->max_cutbacks, &lp->max_cutbacks, NULL));
   PetscOptionsEnd();
   PetscCheck(steps >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-load_steps must be >= 1, got %" PetscInt_FMT, steps);
+  PetscCheck(lp->hold >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-load_hold must be >= 0, got %g", (double)lp->hold);
+  PetscCheck(lp->depth_max >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-load_depth must be >= 0 (nm), got %g", (double)lp->depth_max);
+  lp->t_end = 1.0 + lp->hold + (lp->unload ? 1.0 : 0.0);
   PetscCheck(lp->dt_max > 0 && lp->dt_max <= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-load_max_increment must lie in (0, 1], got %g", (double)lp->dt_max);
   PetscCheck(lp->dt_min > 0 && lp->dt_min <= lp->dt_initial, comm, PETSC_ERR_ARG_OUTOFRANGE, "-load_min_increment must lie in (0, 1/-load_steps = %g], got %g", (double)lp->dt_initial, (double)lp->dt_min);
   PetscCheck(lp->cutback > 0 && lp->cutback < 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-load_cutback must lie in (0, 1), got %g", (double)lp->cutback);
@@ -37,13 +44,34 @@ PetscErrorCode IndLoadPathSetFromOptions(MPI_Comm comm, IndLoadPath *lp)
 
 PetscBool IndLoadPathDone(const IndLoadPath *lp)
 {
-  return lp->t >= 1.0 ? PETSC_TRUE : PETSC_FALSE;
+  return lp->t >= lp->t_end ? PETSC_TRUE : PETSC_FALSE;
 }
 
+PetscReal IndLoadPathFactor(const IndLoadPath *lp, PetscReal t)
+{
+  if (t <= 1.0) return t;
+  if (t <= 1.0 + lp->hold) return 1.0;
+  return PetscMax(0.0, 1.0 - (t - 1.0 - lp->hold));
+}
+
+PetscBool IndLoadPathUnloading(const IndLoadPath *lp, PetscReal t)
+{
+  return lp->unload && t > 1.0 + lp->hold ? PETSC_TRUE : PETSC_FALSE;
+}
+
+void IndLoadPathFinish(IndLoadPath *lp)
+{
+  lp->t = lp->t_end;
+}
+
+/* The next step's end, clamped onto the end of the current segment when it would pass it or stop
+   just short of it. */
 PetscReal IndLoadPathTarget(const IndLoadPath *lp)
 {
-  const PetscReal t = lp->t + lp->dt;
-  return t >= 1.0 - IND_LOAD_END_TOL * lp->dt ? 1.0 : t;
+  const PetscReal ends[3] = {1.0, 1.0 + lp->hold, lp->t_end}, t = lp->t + lp->dt;
+  for (int k = 0; k < 3; ++k)
+    if (lp->t < ends[k] && t >= ends[k] - IND_LOAD_END_TOL * lp->dt) return ends[k];
+  return t;
 }
 
 void IndLoadPathAccept(IndLoadPath *lp, PetscInt its)

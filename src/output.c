@@ -239,14 +239,16 @@ PetscErrorCode IndOutputCreate(IndMesh mesh, IndDisc disc, IndOutput *out)
   o->mesh    = mesh;
   o->disc    = disc;
   o->enabled = PETSC_TRUE;
+  o->curve   = PETSC_TRUE;
   PetscCall(PetscStrncpy(o->dir, "output", sizeof(o->dir)));
   PetscOptionsBegin(comm, NULL, "Output", "Output");
   PetscCall(PetscOptionsString("-output_dir", "Directory for indent.h5 and indent.xdmf (created if missing)", "", o->dir, o->dir, sizeof(o->dir), NULL));
   PetscCall(PetscOptionsBool("-output_fields", "Write field output (HDF5 + XDMF)", "", o->enabled, &o->enabled, NULL));
+  PetscCall(PetscOptionsBool("-output_curve", "Write the load-displacement curve (CSV) of an indentation", "", o->curve, &o->curve, NULL));
   PetscOptionsEnd();
   PetscCheck(o->dir[0], comm, PETSC_ERR_ARG_WRONG, "-output_dir must not be empty");
   PetscCall(PetscSNPrintf(o->h5name, sizeof(o->h5name), "%s/indent.h5", o->dir));
-  if (o->enabled) PetscCall(MakeOutputDir(comm, o->dir));
+  if (o->enabled || o->curve) PetscCall(MakeOutputDir(comm, o->dir));
   PetscCall(CreateStratumDM(mesh->dm, PETSC_FALSE, 3, &o->vdm));
   PetscCall(CreateStratumDM(mesh->dm, PETSC_TRUE, 6, &o->c6dm));
   PetscCall(CreateStratumDM(mesh->dm, PETSC_TRUE, 1, &o->c1dm));
@@ -324,10 +326,32 @@ PetscErrorCode IndOutputWriteStep(IndOutput o, PetscReal time, Vec U, IndAssembl
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+PetscErrorCode IndOutputCurvePoint(IndOutput o, const IndCurvePoint *p)
+{
+  PetscMPIInt rank;
+
+  PetscFunctionBeginUser;
+  if (!o->curve) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCallMPI(MPI_Comm_rank(PetscObjectComm((PetscObject)o->vdm), &rank));
+  if (rank) PetscFunctionReturn(PETSC_SUCCESS);
+  if (!o->csv) {
+    char path[PETSC_MAX_PATH_LEN];
+    PetscCall(PetscSNPrintf(path, sizeof(path), "%s/load_displacement.csv", o->dir));
+    o->csv = fopen(path, "w");
+    PetscCheck(o->csv, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "Cannot write '%s' (-output_dir)", path);
+    fprintf(o->csv, "step,t,depth_nm,load_uN,contact_nodes,stick,slip,newton,uzawa,linear,cutbacks,penetration_nm,contact_area_nm2,seconds\n");
+  }
+  fprintf(o->csv, "%" PetscInt_FMT ",%.10g,%.12g,%.12g,%" PetscInt_FMT ",%" PetscInt_FMT ",%" PetscInt_FMT ",%" PetscInt_FMT ",%" PetscInt_FMT ",%" PetscInt_FMT ",%" PetscInt_FMT ",%.6g,%.10g,%.4f\n", p->step, (double)p->t, (double)p->depth, (double)p->load, p->contact, p->stick, p->slip, p->newton, p->outer,
+          p->linear, p->cutbacks, (double)p->penetration, (double)p->area, (double)p->seconds);
+  PetscCheck(fflush(o->csv) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Error writing %s/load_displacement.csv", o->dir);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode IndOutputDestroy(IndOutput *o)
 {
   PetscFunctionBeginUser;
   if (!*o) PetscFunctionReturn(PETSC_SUCCESS);
+  if ((*o)->csv) fclose((*o)->csv);
   if ((*o)->viewer) PetscCall(PetscViewerHDF5PopTimestepping((*o)->viewer));
   PetscCall(PetscViewerDestroy(&(*o)->viewer));
   PetscCall(VecDestroy(&(*o)->Uloc));

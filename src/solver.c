@@ -15,6 +15,7 @@ static PetscErrorCode FormResidual(SNES snes, Vec U, Vec F, void *ctx)
   PetscCall(IndAssemblyResidual(s->assembly, s->Uloc, s->Floc));
   PetscCall(VecZeroEntries(F));
   PetscCall(DMLocalToGlobal(s->dm, s->Floc, ADD_VALUES, F));
+  if (s->contact) PetscCall(IndContactResidual(s->contact, s->Ubc, F));
   PetscCall(IndBCApplyResidual(s->bc, s->load_factor, U, F));
   counts[0] = s->assembly->nfailed;
   counts[1] = s->assembly->nplastic;
@@ -36,6 +37,7 @@ static PetscErrorCode FormJacobian(SNES snes, Vec U, Mat A, Mat P, void *ctx)
   PetscCall(IndBCApplySolution(s->bc, s->load_factor, s->Ubc));
   PetscCall(DMGlobalToLocal(s->dm, s->Ubc, INSERT_VALUES, s->Uloc));
   PetscCall(IndAssemblyJacobian(s->assembly, s->Uloc, P));
+  if (s->contact) PetscCall(IndContactJacobian(s->contact, s->Ubc, P));
   PetscCall(IndBCApplyJacobian(s->bc, P));
   if (A != P) {
     PetscCall(MatAssemblyBegin(A, MAT_FINAL_ASSEMBLY));
@@ -44,7 +46,7 @@ static PetscErrorCode FormJacobian(SNES snes, Vec U, Mat A, Mat P, void *ctx)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode IndSolverCreate(DM dm, IndAssembly assembly, IndBC bc, IndSolver *out)
+PetscErrorCode IndSolverCreate(DM dm, IndAssembly assembly, IndBC bc, IndContact contact, PetscReal depth_max, IndSolver *out)
 {
   IndSolver    s;
   KSP          ksp;
@@ -56,6 +58,7 @@ PetscErrorCode IndSolverCreate(DM dm, IndAssembly assembly, IndBC bc, IndSolver 
   s->dm       = dm;
   s->assembly = assembly;
   s->bc       = bc;
+  s->contact  = contact;
   PetscCall(DMCreateLocalVector(dm, &s->Uloc));
   PetscCall(DMCreateLocalVector(dm, &s->Floc));
   PetscCall(DMCreateGlobalVector(dm, &s->Ubc));
@@ -85,7 +88,8 @@ PetscErrorCode IndSolverCreate(DM dm, IndAssembly assembly, IndBC bc, IndSolver 
   PetscCall(SNESSetFunction(s->snes, NULL, FormResidual, s));
   PetscCall(SNESSetJacobian(s->snes, s->J, s->J, FormJacobian, s));
   PetscCall(SNESGetKSP(s->snes, &ksp));
-  PetscCall(KSPSetType(ksp, KSPCG));
+  /* The frictional part of the augmented contact Jacobian is not symmetric. */
+  PetscCall(KSPSetType(ksp, contact && contact->variant == IND_UZAWA_AUGMENTED && contact->mu > 0 ? KSPGMRES : KSPCG));
   /* Tighter than Newton's own 1e-8 so a linear step converges in one Newton iteration. */
   PetscCall(KSPSetTolerances(ksp, 1e-10, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT));
   PetscCall(KSPGetPC(ksp, &pc));
@@ -99,20 +103,63 @@ PetscErrorCode IndSolverCreate(DM dm, IndAssembly assembly, IndBC bc, IndSolver 
      their own at each setup: no failure, and still 30% faster than rebuilding the interpolation. */
   PetscCall(PCGAMGSetUseSAEstEig(pc, PETSC_FALSE));
   PetscCall(SNESSetFromOptions(s->snes));
+  if (contact) {
+    /* rho from the stiffness of the undeformed body, before any condition touches its diagonal */
+    PetscCall(VecZeroEntries(s->Uloc));
+    PetscCall(IndAssemblyJacobian(assembly, s->Uloc, s->J));
+    PetscCall(IndContactSetUp(contact, s->J, depth_max));
+  }
   *out = s;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode IndSolverSolve(IndSolver s, PetscReal load_factor, Vec U, SNESConvergedReason *reason)
+PetscErrorCode IndSolverSolve(IndSolver s, PetscReal load_factor, Vec U, IndSolveResult *r)
 {
+  IndContact c           = s->contact;
+  PetscReal  last_change = PETSC_MAX_REAL;
+
   PetscFunctionBeginUser;
+  PetscCall(PetscMemzero(r, sizeof(*r)));
   s->load_factor = load_factor;
   PetscCall(IndBCSetUp(s->bc));
   /* Starting on the prescribed values makes the Newton correction vanish on constrained rows, which
      is what zeroing their columns in the Jacobian assumes. */
   PetscCall(IndBCApplySolution(s->bc, load_factor, U));
-  PetscCall(SNESSolve(s->snes, NULL, U));
-  PetscCall(SNESGetConvergedReason(s->snes, reason));
+  for (PetscInt k = 1; k <= (c ? c->max_outer : 1); ++k) {
+    PetscInt its, lits;
+    PetscCall(SNESSolve(s->snes, NULL, U));
+    PetscCall(SNESGetConvergedReason(s->snes, &r->reason));
+    PetscCall(SNESGetIterationNumber(s->snes, &its));
+    PetscCall(SNESGetLinearSolveIterations(s->snes, &lits));
+    r->newton += its;
+    r->linear += lits;
+    if (r->reason <= 0) {
+      if (r->reason == SNES_DIVERGED_FUNCTION_DOMAIN) PetscCall(PetscSNPrintf(r->why, sizeof(r->why), "return map failed at %" PetscInt_FMT " quadrature points", s->nfailed));
+      else PetscCall(PetscSNPrintf(r->why, sizeof(r->why), "Newton: %s after %" PetscInt_FMT " iterations%s", SNESConvergedReasons[r->reason], its, c ? " in the contact loop" : ""));
+      PetscFunctionReturn(PETSC_SUCCESS);
+    }
+    if (!c) {
+      r->converged = PETSC_TRUE;
+      PetscFunctionReturn(PETSC_SUCCESS);
+    }
+    PetscCall(IndContactUpdate(c, U, &r->contact));
+    r->outer = k;
+    if (c->monitor)
+      PetscCall(PetscPrintf(c->comm, "    uzawa %2" PetscInt_FMT ": newton %2" PetscInt_FMT "  contact %5" PetscInt_FMT " (stick %5" PetscInt_FMT ", slip %5" PetscInt_FMT ")  load %.6e uN  penetration %.3e nm  reaction change %.3e\n", k, its, r->contact.contact, r->contact.stick, r->contact.slip,
+                            (double)(r->contact.load * 1e-3), (double)r->contact.penetration, (double)r->contact.change));
+    if (r->contact.change <= c->rtol && r->contact.penetration <= c->pen_atol) {
+      r->converged = PETSC_TRUE;
+      PetscFunctionReturn(PETSC_SUCCESS);
+    }
+    /* A growing change means rho is past the fixed point's stability limit: halve it, for good. */
+    if (c->variant == IND_UZAWA_FIXED_POINT && r->contact.change > last_change) {
+      for (PetscInt i = 0; i < c->n; ++i) c->rho[i] *= 0.5;
+      c->rho_scale *= 0.5;
+      if (c->monitor) PetscCall(PetscPrintf(c->comm, "    uzawa: reaction change grew, rho halved (scale now %g)\n", (double)c->rho_scale));
+    }
+    last_change = r->contact.change;
+  }
+  PetscCall(PetscSNPrintf(r->why, sizeof(r->why), "contact loop: %" PetscInt_FMT " outer iterations, reaction change %.2e (-contact_uzawa_rtol %.1e), penetration %.2e nm (limit %.2e)", c->max_outer, (double)r->contact.change, (double)c->rtol, (double)r->contact.penetration, (double)c->pen_atol));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

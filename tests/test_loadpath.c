@@ -13,7 +13,7 @@ int main(int argc, char **argv)
   PetscCall(PetscInitialize(&argc, &argv, NULL, help));
   /* Ten equal steps end exactly at 1, although 10 * 0.1 is not 1 in floating point. */
   PetscCall(PetscOptionsSetValue(NULL, "-load_steps", "10"));
-  PetscCall(IndLoadPathSetFromOptions(PETSC_COMM_SELF, &lp));
+  PetscCall(IndLoadPathSetFromOptions(PETSC_COMM_SELF, PETSC_FALSE, &lp));
   while (!IndLoadPathDone(&lp)) {
     IndLoadPathAccept(&lp, 10);
     n++;
@@ -21,7 +21,7 @@ int main(int argc, char **argv)
   EXPECT(n == 10 && lp.t == 1.0, "10 steps of 0.1: %" PetscInt_FMT " steps, end %.17g", n, (double)lp.t);
 
   /* A failure halves the increment; easy steps grow it by 1.5 up to the initial increment. */
-  PetscCall(IndLoadPathSetFromOptions(PETSC_COMM_SELF, &lp));
+  PetscCall(IndLoadPathSetFromOptions(PETSC_COMM_SELF, PETSC_FALSE, &lp));
   PetscCall(IndLoadPathReject(&lp, PETSC_COMM_SELF, "test"));
   EXPECT(PetscAbsReal(IndLoadPathTarget(&lp) - 0.05) < 1e-15, "after a cutback the target is %g, not 0.05", (double)IndLoadPathTarget(&lp));
   IndLoadPathAccept(&lp, 2);
@@ -32,7 +32,7 @@ int main(int argc, char **argv)
   EXPECT(PetscAbsReal(lp.dt - 0.1) < 1e-15 && lp.cutbacks == 1 && lp.cutbacks_in_a_row == 0, "a hard step keeps the increment");
 
   /* Ten cutbacks in a row reach -load_min_increment (initial / 1024); the eleventh is an error. */
-  PetscCall(IndLoadPathSetFromOptions(PETSC_COMM_SELF, &lp));
+  PetscCall(IndLoadPathSetFromOptions(PETSC_COMM_SELF, PETSC_FALSE, &lp));
   PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
   for (n = 0; n < 10; ++n) PetscCall(IndLoadPathReject(&lp, PETSC_COMM_SELF, "test"));
   err = IndLoadPathReject(&lp, PETSC_COMM_SELF, "test");
@@ -40,13 +40,39 @@ int main(int argc, char **argv)
 
   /* Non-physical settings are refused. */
   PetscCall(PetscOptionsSetValue(NULL, "-load_growth", "0.5"));
-  err = IndLoadPathSetFromOptions(PETSC_COMM_SELF, &lp);
+  err = IndLoadPathSetFromOptions(PETSC_COMM_SELF, PETSC_FALSE, &lp);
   EXPECT(err == PETSC_ERR_ARG_OUTOFRANGE, "-load_growth 0.5 must be refused");
   PetscCall(PetscOptionsClearValue(NULL, "-load_growth"));
   PetscCall(PetscOptionsSetValue(NULL, "-load_steps", "0"));
-  err = IndLoadPathSetFromOptions(PETSC_COMM_SELF, &lp);
+  err = IndLoadPathSetFromOptions(PETSC_COMM_SELF, PETSC_FALSE, &lp);
   EXPECT(err == PETSC_ERR_ARG_OUTOFRANGE, "-load_steps 0 must be refused");
   PetscCall(PetscPopErrorHandler());
+  PetscCall(PetscOptionsClearValue(NULL, "-load_steps"));
+  /* Load, hold, unload: steps land on the segments' ends, lambda goes 0 -> 1 -> 1 -> 0. */
+  PetscCall(PetscOptionsSetValue(NULL, "-load_steps", "4"));
+  PetscCall(PetscOptionsSetValue(NULL, "-load_hold", "0.5"));
+  PetscCall(IndLoadPathSetFromOptions(PETSC_COMM_SELF, PETSC_TRUE, &lp));
+  {
+    const PetscReal t_expect[] = {0.25, 0.5, 0.75, 1.0, 1.25, 1.5, 1.75, 2.0, 2.25, 2.5};
+    const PetscReal l_expect[] = {0.25, 0.5, 0.75, 1.0, 1.0, 1.0, 0.75, 0.5, 0.25, 0.0};
+    n = 0;
+    while (!IndLoadPathDone(&lp)) {
+      const PetscReal t = IndLoadPathTarget(&lp);
+      EXPECT(n < 10 && PetscAbsReal(t - t_expect[n]) < 1e-14 && PetscAbsReal(IndLoadPathFactor(&lp, t) - l_expect[n]) < 1e-14, "program step %" PetscInt_FMT ": t %g, lambda %g", n, (double)t, (double)IndLoadPathFactor(&lp, t));
+      EXPECT(IndLoadPathUnloading(&lp, t) == (n >= 6 ? PETSC_TRUE : PETSC_FALSE), "unloading flag at step %" PetscInt_FMT, n);
+      IndLoadPathAccept(&lp, 10);
+      n++;
+    }
+    EXPECT(n == 10, "load-hold-unload took %" PetscInt_FMT " steps, not 10", n);
+  }
+  /* A cut step near a segment's end still lands on it. */
+  PetscCall(IndLoadPathSetFromOptions(PETSC_COMM_SELF, PETSC_TRUE, &lp));
+  lp.t  = 0.9;
+  lp.dt = 0.1 + 1e-12;
+  EXPECT(IndLoadPathTarget(&lp) == 1.0, "a step ending 1e-12 past the end of loading is clamped onto it");
+  IndLoadPathFinish(&lp);
+  EXPECT(IndLoadPathDone(&lp), "Finish ends the program");
+  PetscCall(PetscOptionsClearValue(NULL, "-load_hold"));
   PetscCall(PetscOptionsClearValue(NULL, "-load_steps"));
   PetscCall(PetscPrintf(PETSC_COMM_SELF, "load path: end point, cutback, growth, cap and error paths behave\n"));
   PetscCall(PetscFinalize());

@@ -146,11 +146,13 @@ int main(int argc, char **argv)
          from the previous step's history (after a commit every plastic point sits on the kink of
          the yield surface, where no finite difference is meaningful). */
       if (last && fd_tol >= 0) {
+        IndSolveResult sr;
         PetscCall(PetscMemzero(&r, sizeof(r)));
-        PetscCall(IndSolverSolve(app->solver, 1.0, app->U, &r.reason));
-        PetscCall(SNESGetIterationNumber(app->solver->snes, &r.newton));
+        PetscCall(IndSolverSolve(app->solver, 1.0, app->U, &sr));
         PetscCall(IndSolverEvaluate(app->solver, app->U));
-        r.converged = r.reason > 0 ? PETSC_TRUE : PETSC_FALSE;
+        r.reason    = sr.reason;
+        r.newton    = sr.newton;
+        r.converged = sr.converged;
         r.plastic   = app->solver->nplastic;
       } else PetscCall(IndAppSolveStep(app, 1.0, &r));
       PetscCheck(r.converged, PETSC_COMM_WORLD, PETSC_ERR_NOT_CONVERGED, "%s step %" PetscInt_FMT ": Newton failed (%s)", phase ? "shear" : "tension", k, SNESConvergedReasons[r.reason]);
