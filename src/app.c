@@ -93,9 +93,11 @@ PetscErrorCode IndAppSolveStep(IndApp app, PetscReal t, IndStepResult *r)
   if (app->contact) app->contact->indenter.depth = r->depth;
   /* The prescribed values alone would strain only the boundary layer of cells, which then yields in
      the first iterate and sends Newton astray; either predictor starts it near the answer. The last
-     increment is scaled by the change of load factor, so a hold starts from the last state and an
-     unloading from the loading increment reversed. */
-  if (app->predictor == IND_PREDICTOR_EXTRAPOLATE && app->dlambda_last != 0) PetscCall(VecAXPY(app->U, (r->lambda - lambda_old) / app->dlambda_last, app->dU));
+     increment is scaled by the change of load factor; a hold or a reversal takes the tangent
+     response instead (for an indenter alone, the last state). */
+  /* Not across a reversal: unloading from a plastic state is nothing like the loading increment
+     reversed (that guess made Newton diverge 9 times in a row on a Vickers indentation). */
+  if (app->predictor == IND_PREDICTOR_EXTRAPOLATE && (r->lambda - lambda_old) * app->dlambda_last > 0) PetscCall(VecAXPY(app->U, (r->lambda - lambda_old) / app->dlambda_last, app->dU));
   else if (app->predictor != IND_PREDICTOR_NONE) PetscCall(IndSolverPredict(s, lambda_old, r->lambda, app->U));
   PetscCall(IndSolverSolve(s, r->lambda, app->U, &sr));
   r->reason    = sr.reason;
@@ -139,7 +141,8 @@ PetscErrorCode IndAppRun(IndApp app)
       PetscCall(IndLoadPathReject(lp, app->comm, r.why));
       continue;
     }
-    IndLoadPathAccept(lp, r.newton);
+    /* With contact, Newton runs once per outer iteration: judge the step by its average. */
+    IndLoadPathAccept(lp, r.outer > 1 ? (r.newton + r.outer - 1) / r.outer : r.newton);
     if (!app->quiet) {
       if (app->contact)
         PetscCall(PetscPrintf(app->comm, "step %3" PetscInt_FMT "  depth %9.4f nm  load %11.5f uN  contact %5" PetscInt_FMT " (slip %5" PetscInt_FMT ")  uzawa %2" PetscInt_FMT "  newton %3" PetscInt_FMT "  linear %5" PetscInt_FMT "  plastic %7" PetscInt_FMT "  cutbacks %2" PetscInt_FMT "  %.2f s\n", lp->accepted, (double)r.depth,

@@ -17,6 +17,13 @@ IndContactStatus IndBipotentialProject(PetscReal mu, const PetscReal tau[3], Pet
 
   if (D)
     for (int k = 0; k < 9; ++k) D[k] = 0.0;
+  if (mu == 0) { /* frictionless: no tangential reaction whatever the slip, so no tangential derivative */
+    r[0] = PetscMax(tau[0], 0.0);
+    r[1] = r[2] = 0.0;
+    if (tau[0] <= 0) return IND_CONTACT_OPEN;
+    if (D) D[0] = 1.0;
+    return IND_CONTACT_SLIP;
+  }
   if (mu * a <= -tau[0]) { /* separating: the polar cone */
     r[0] = r[1] = r[2] = 0.0;
     return IND_CONTACT_OPEN;

@@ -204,7 +204,6 @@ PetscErrorCode IndContactCreate(IndMesh mesh, IndDisc disc, IndBC bc, IndContact
   c->variant   = IND_UZAWA_AUGMENTED;
   c->rtol      = 1e-6;
   c->pen_rtol  = 1e-4;
-  c->max_outer = 50;
   c->monitor   = PETSC_FALSE;
   PetscOptionsBegin(comm, NULL, "Rigid indenter and contact", "Contact");
   PetscCall(PetscOptionsReal("-indenter_radius", "Sphere, tip (cone, pyramids; 0 sharp) or punch radius (nm)", "", radius, &radius, &has_radius));
@@ -218,6 +217,7 @@ PetscErrorCode IndContactCreate(IndMesh mesh, IndDisc disc, IndBC bc, IndContact
   /* The augmented loop contracts faster the larger rho is; the fixed point diverges once rho exceeds
      2 / (largest eigenvalue of the contact compliance), about the stiffness diagonal already. */
   c->rho_scale = c->variant == IND_UZAWA_AUGMENTED ? 100.0 : 0.3;
+  c->max_outer = c->variant == IND_UZAWA_AUGMENTED ? 50 : 200;
   PetscCall(PetscOptionsReal("-contact_rho_scale", "rho = scale * mean stiffness diagonal of each contact node (default 100 augmented, 0.3 fixed_point)", "", c->rho_scale, &c->rho_scale, NULL));
   PetscCall(PetscOptionsReal("-contact_uzawa_rtol", "Outer loop: relative change of the reactions", "", c->rtol, &c->rtol, NULL));
   PetscCall(PetscOptionsReal("-contact_penetration_rtol", "Outer loop: largest penetration relative to the largest depth", "", c->pen_rtol, &c->pen_rtol, NULL));
@@ -227,7 +227,7 @@ PetscErrorCode IndContactCreate(IndMesh mesh, IndDisc disc, IndBC bc, IndContact
     PetscCall(PetscOptionsEnum("-contact_gap", "Gap at the current position of the node, or at its undeformed horizontal position (small-deformation contact)", "", gaps, (PetscEnum)gap, (PetscEnum *)&gap, NULL));
     c->gap_current = gap == 0 ? PETSC_TRUE : PETSC_FALSE;
   }
-  PetscCall(PetscOptionsInt("-contact_uzawa_max_it", "Outer iterations before the step fails", "", c->max_outer, &c->max_outer, NULL));
+  PetscCall(PetscOptionsInt("-contact_uzawa_max_it", "Outer iterations before the step fails (default 50 augmented, 200 fixed_point)", "", c->max_outer, &c->max_outer, NULL));
   PetscCall(PetscOptionsBool("-contact_monitor", "Print a line per outer iteration", "", c->monitor, &c->monitor, NULL));
   PetscCall(PetscOptionsReal("-contact_symmetry_factor", "Load multiplier of a symmetric part model (default: 2 per symmetry plane through the axis)", "", symmetry, &symmetry, &has_sym));
   PetscOptionsEnd();
