@@ -1,0 +1,116 @@
+static const char help[] = "indent-op: Oliver-Pharr analysis of a load-displacement curve (CSV with columns depth_nm and load_uN,\n"
+                           "as indent writes in load_displacement.csv; a contact_area_nm2 column adds the true-area values).\n"
+                           "  -op_file FILE            the curve (required)\n"
+                           "  -op_fraction f           fit the unloading points with P >= (1 - f) P_max (0.5)\n"
+                           "  -op_epsilon e            h_c = h_max - e P_max / S (0.75)\n"
+                           "  -op_beta b               E_r = sqrt(pi) / (2 b) S / sqrt(A) (1.034)\n"
+                           "  -op_indenter_modulus E   GPa; 0 for a rigid indenter (default); diamond: 1141\n"
+                           "  -op_indenter_poisson nu  (0.07)\n"
+                           "  -op_poisson nu           the sample's, for its modulus E (0.3)\n"
+                           "  -indenter_type, -indenter_radius (nm), -indenter_angle (degrees): the area function A(h_c)\n";
+
+#include <string.h>
+#include "ind_oliverpharr.h"
+#include "ind_indenter.h"
+
+static PetscReal Area(PetscReal hc, void *ctx)
+{
+  return IndIndenterArea((const IndIndenter *)ctx, hc);
+}
+
+/* Reads the columns depth_nm, load_uN and (if present) contact_area_nm2 of a CSV file. */
+static PetscErrorCode ReadCurve(const char path[], PetscInt *n, PetscReal **h, PetscReal **P, PetscReal **A)
+{
+  FILE    *fp = fopen(path, "r");
+  char     line[4096];
+  int      ch = -1, cP = -1, cA = -1, col = 0;
+  PetscInt cap = 1024;
+
+  PetscFunctionBeginUser;
+  PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "Cannot open the curve '%s' (-op_file)", path);
+  PetscCheck(fgets(line, sizeof(line), fp), PETSC_COMM_SELF, PETSC_ERR_FILE_READ, "'%s' (-op_file) is empty", path);
+  for (char *tok = strtok(line, ",\r\n"); tok; tok = strtok(NULL, ",\r\n"), ++col) {
+    if (!strcmp(tok, "depth_nm")) ch = col;
+    if (!strcmp(tok, "load_uN")) cP = col;
+    if (!strcmp(tok, "contact_area_nm2")) cA = col;
+  }
+  PetscCheck(ch >= 0 && cP >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "'%s' (-op_file) has no depth_nm and load_uN columns", path);
+  PetscCall(PetscMalloc3(cap, h, cap, P, cap, A));
+  *n = 0;
+  while (fgets(line, sizeof(line), fp)) {
+    char *end;
+    col = 0;
+    if (*n == cap) {
+      PetscReal *h2, *P2, *A2;
+      PetscCall(PetscMalloc3(2 * cap, &h2, 2 * cap, &P2, 2 * cap, &A2));
+      PetscCall(PetscArraycpy(h2, *h, cap));
+      PetscCall(PetscArraycpy(P2, *P, cap));
+      PetscCall(PetscArraycpy(A2, *A, cap));
+      PetscCall(PetscFree3(*h, *P, *A));
+      *h = h2, *P = P2, *A = A2, cap *= 2;
+    }
+    (*A)[*n] = 0;
+    for (char *tok = strtok(line, ",\r\n"); tok; tok = strtok(NULL, ",\r\n"), ++col) {
+      const double v = strtod(tok, &end);
+      if (col == ch || col == cP || col == cA) PetscCheck(end != tok, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "'%s' (-op_file) line %" PetscInt_FMT ": '%s' is not a number", path, *n + 2, tok);
+      if (col == ch) (*h)[*n] = v;
+      if (col == cP) (*P)[*n] = v;
+      if (col == cA) (*A)[*n] = v;
+    }
+    (*n)++;
+  }
+  fclose(fp);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+int main(int argc, char **argv)
+{
+  char        path[PETSC_MAX_PATH_LEN] = "";
+  IndOPParams p;
+  IndOPResult r;
+  IndIndenter ind;
+  PetscReal  *h, *P, *A, angle = 0;
+  PetscInt    n = 0, imax = 0;
+  PetscBool   has_file, has_type;
+  int         code;
+
+  PetscCall(PetscInitialize(&argc, &argv, NULL, help));
+  IndOPParamsDefault(&p);
+  PetscCall(PetscMemzero(&ind, sizeof(ind)));
+  PetscOptionsBegin(PETSC_COMM_WORLD, NULL, "Oliver-Pharr analysis", "OP");
+  PetscCall(PetscOptionsString("-op_file", "Load-displacement CSV", "", path, path, sizeof(path), &has_file));
+  PetscCall(PetscOptionsReal("-op_fraction", "Fitted part of the unloading load range", "", p.fraction, &p.fraction, NULL));
+  PetscCall(PetscOptionsReal("-op_epsilon", "Contact-depth factor epsilon", "", p.epsilon, &p.epsilon, NULL));
+  PetscCall(PetscOptionsReal("-op_beta", "Shape factor beta", "", p.beta, &p.beta, NULL));
+  PetscCall(PetscOptionsReal("-op_indenter_modulus", "Indenter's Young's modulus (GPa; 0 rigid)", "", p.E_indenter, &p.E_indenter, NULL));
+  PetscCall(PetscOptionsReal("-op_indenter_poisson", "Indenter's Poisson's ratio", "", p.nu_indenter, &p.nu_indenter, NULL));
+  PetscCall(PetscOptionsReal("-op_poisson", "Sample's Poisson's ratio", "", p.nu_sample, &p.nu_sample, NULL));
+  PetscCall(PetscOptionsEnum("-indenter_type", "Indenter shape (area function)", "", IndIndenterTypes, (PetscEnum)ind.type, (PetscEnum *)&ind.type, &has_type));
+  PetscCall(PetscOptionsReal("-indenter_radius", "Sphere, tip or punch radius (nm)", "", ind.radius, &ind.radius, NULL));
+  PetscCall(PetscOptionsReal("-indenter_angle", "Cone or face angle (degrees; 0 standard)", "", angle, &angle, NULL));
+  PetscOptionsEnd();
+  PetscCheck(has_file, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-op_file is required (a CSV with depth_nm and load_uN)");
+  PetscCheck(has_type, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-indenter_type is required for the area function");
+  ind.angle = angle * PETSC_PI / 180;
+  PetscCheck(!IndIndenterSetUp(&ind), PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-indenter_type %s: bad -indenter_radius or -indenter_angle", IndIndenterTypes[ind.type]);
+  PetscCall(ReadCurve(path, &n, &h, &P, &A));
+  code = IndOliverPharr(h, P, n, &p, Area, &ind, &r);
+  PetscCheck(code != 1, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "'%s': fewer than 3 unloading points with P >= (1 - %g) P_max: record more unloading steps or raise -op_fraction", path, (double)p.fraction);
+  PetscCheck(code != 3, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-op_fraction must lie in (0, 1], -op_epsilon and -op_beta be > 0");
+  PetscCheck(code == 0, PETSC_COMM_WORLD, PETSC_ERR_NOT_CONVERGED, "'%s': the unloading branch is not a power law (fit gave alpha %g, m %g)", path, (double)r.alpha, (double)r.m);
+  for (PetscInt i = 1; i < n; ++i)
+    if (P[i] > P[imax]) imax = i;
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "Oliver-Pharr analysis of %s (%s indenter)\n", path, IndIndenterTypes[ind.type]));
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "  P_max %.6g uN at h_max %.6g nm\n", (double)r.P_max, (double)r.h_max));
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "  fit of %" PetscInt_FMT " unloading points: P = %.6g (h - %.6g)^%.6g, rms misfit %.3g uN\n", r.npoints, (double)r.alpha, (double)r.h_f, (double)r.m, (double)r.rms));
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "  S %.10g uN/nm, h_c %.10g nm (h_c/h_max %.4f), A(h_c) %.10g nm^2\n", (double)r.S, (double)r.h_c, (double)(r.h_c / r.h_max), (double)r.A));
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "  H %.10g GPa, E_r %.10g GPa, E %.10g GPa (nu %.3g, %s indenter)\n", (double)r.H, (double)r.E_r, (double)r.E, (double)p.nu_sample, p.E_indenter > 0 ? "elastic" : "rigid"));
+  if (A[imax] > 0) {
+    PetscReal H, Er, E;
+    IndOPFromArea(&p, &r, A[imax], &H, &Er, &E);
+    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "  true contact area at P_max %.6g nm^2 (A_true / A(h_c) = %.4f): H %.6g GPa, E_r %.6g GPa, E %.6g GPa\n", (double)A[imax], (double)(A[imax] / r.A), (double)H, (double)Er, (double)E));
+  }
+  PetscCall(PetscFree3(h, P, A));
+  PetscCall(PetscFinalize());
+  return 0;
+}
