@@ -1,0 +1,30 @@
+// Half model of a film on a substrate for a Berkovich indentation on the mirror plane y = 0 (y >= 0):
+// the indenter's axis is the z axis, the top surface is z = 0. Tetrahedra, refined near the tip.
+// Parameters (nm): -setnumber film 300 -setnumber width 1500 -setnumber depth 1500
+//                  -setnumber h_tip 10 -setnumber h_far 250 -setnumber r_fine 150
+SetFactory("OpenCASCADE");
+DefineConstant[ film = 300, width = 1500, depth = 1500, h_tip = 10, h_far = 250, r_fine = 150 ];
+Box(1) = {-width, 0, -film, 2 * width, width, film};            // film
+Box(2) = {-width, 0, -depth, 2 * width, width, depth - film};   // substrate
+BooleanFragments{ Volume{1}; Delete; }{ Volume{2}; Delete; }
+Point(100) = {0, 0, 0};
+Field[1] = Distance;
+Field[1].PointsList = {100};
+Field[2] = Threshold;
+Field[2].InField = 1;
+Field[2].SizeMin = h_tip;
+Field[2].SizeMax = h_far;
+Field[2].DistMin = r_fine;
+Field[2].DistMax = 8 * r_fine;
+Background Field = 2;
+Mesh.CharacteristicLengthExtendFromBoundary = 0;
+Mesh.CharacteristicLengthFromPoints = 0;
+e = 1e-3;
+Physical Volume("film") = Volume In BoundingBox{-width - e, -e, -film - e, width + e, width + e, e};
+Physical Volume("substrate") = Volume In BoundingBox{-width - e, -e, -depth - e, width + e, width + e, -film + e};
+Physical Surface("top") = Surface In BoundingBox{-width - e, -e, -e, width + e, width + e, e};
+Physical Surface("bottom") = Surface In BoundingBox{-width - e, -e, -depth - e, width + e, width + e, -depth + e};
+Physical Surface("symmetry") = Surface In BoundingBox{-width - e, -e, -depth - e, width + e, e, e};
+Physical Surface("sides") = Surface In BoundingBox{-width - e, width - e, -depth - e, width + e, width + e, e}
+                          , Surface In BoundingBox{-width - e, -e, -depth - e, -width + e, width + e, e}
+                          , Surface In BoundingBox{width - e, -e, -depth - e, width + e, width + e, e};
