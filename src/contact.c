@@ -314,10 +314,10 @@ PetscErrorCode IndContactSetUp(IndContact c, Mat K, PetscReal depth_max)
 }
 
 /* The local problem of node i at displacement u (3 values): frame, predictor and projection. The
-   force on the body is f = r0 n + r1 t1 + r2 t2; D = dr/dtau; s the unit slip direction (local). */
+   force on the body is f = r0 n + r1 t1 + r2 t2; D = dr/dtau; s the unit slip direction (local).
+   With either gap definition d gap / d u = n. */
 typedef struct {
   PetscReal        gap, n[3], t1[3], t2[3], r[3], f[3], D[9], s[2];
-  PetscReal        dg[3]; /* d gap / d u */
   IndContactStatus status;
 } NodeState;
 
@@ -357,7 +357,6 @@ static void NodeSolve(IndContact c, PetscInt i, const PetscScalar *u, NodeState 
     ns->t1[0] = 1, ns->t1[1] = ns->t1[2] = 0;
     ns->t2[1] = 1, ns->t2[0] = ns->t2[2] = 0;
   }
-  for (int d = 0; d < 3; ++d) ns->dg[d] = ns->n[d];
   /* slip relative to the indenter, which moved down by the change of depth over the step */
   for (int d = 0; d < 3; ++d) du[d] = PetscRealPart(u[d]) - Uc[d];
   du[2] += c->indenter.depth - c->depth_c;
@@ -414,7 +413,7 @@ PetscErrorCode IndContactJacobian(IndContact c, Vec U, Mat J)
          rotation is left out). The residual has -f, so J += rho Q D G. */
       for (int d = 0; d < 3; ++d) {
         Q[d][0] = ns.n[d], Q[d][1] = ns.t1[d], Q[d][2] = ns.t2[d];
-        G[0][d] = ns.dg[d] + c->mu * (ns.s[0] * ns.t1[d] + ns.s[1] * ns.t2[d]);
+        G[0][d] = ns.n[d] + c->mu * (ns.s[0] * ns.t1[d] + ns.s[1] * ns.t2[d]);
         G[1][d] = ns.t1[d];
         G[2][d] = ns.t2[d];
       }

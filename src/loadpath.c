@@ -34,6 +34,7 @@ PetscErrorCode IndLoadPathSetFromOptions(MPI_Comm comm, PetscBool unload_default
   PetscCheck(lp->dt_min > 0 && lp->dt_min <= lp->dt_initial, comm, PETSC_ERR_ARG_OUTOFRANGE, "-load_min_increment must lie in (0, 1/-load_steps = %g], got %g", (double)lp->dt_initial, (double)lp->dt_min);
   PetscCheck(lp->cutback > 0 && lp->cutback < 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-load_cutback must lie in (0, 1), got %g", (double)lp->cutback);
   PetscCheck(lp->growth >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-load_growth must be >= 1, got %g", (double)lp->growth);
+  PetscCheck(lp->easy_its >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-load_easy_its must be >= 0, got %" PetscInt_FMT, lp->easy_its);
   PetscCheck(lp->max_cutbacks >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-load_max_cutbacks must be >= 0, got %" PetscInt_FMT, lp->max_cutbacks);
   lp->dt = PetscMin(lp->dt_initial, lp->dt_max);
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -90,6 +90,9 @@ int main(int argc, char **argv)
   PetscCall(PetscOptionsReal("-indenter_angle", "Cone or face angle (degrees; 0 standard)", "", angle, &angle, NULL));
   PetscOptionsEnd();
   PetscCheck(has_file, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-op_file is required (a CSV with depth_nm and load_uN)");
+  PetscCheck(p.E_indenter >= 0, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-op_indenter_modulus must be >= 0 (GPa; 0 rigid), got %g", (double)p.E_indenter);
+  PetscCheck(p.nu_indenter > -1 && p.nu_indenter < 0.5, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-op_indenter_poisson must lie in (-1, 0.5), got %g", (double)p.nu_indenter);
+  PetscCheck(p.nu_sample > -1 && p.nu_sample < 0.5, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-op_poisson must lie in (-1, 0.5), got %g", (double)p.nu_sample);
   PetscCheck(has_type, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-indenter_type is required for the area function");
   ind.angle = angle * PETSC_PI / 180;
   PetscCheck(!IndIndenterSetUp(&ind), PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-indenter_type %s: bad -indenter_radius or -indenter_angle", IndIndenterTypes[ind.type]);

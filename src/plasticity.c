@@ -24,7 +24,7 @@ PetscErrorCode IndPlasticParamsCheck(const IndPlasticParams *m, const char prefi
   if (m->elastic_only) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCheck(m->R0 > 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-%syield must be > 0 (GPa), got %g", pre, (double)m->R0);
   PetscCheck(m->H >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-%skinematic must be >= 0 (GPa), got %g", pre, (double)m->H);
-  PetscCheck(m->max_iterations >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "Iteration cap of the plastic return must be >= 0 (0: default), got %" PetscInt_FMT, m->max_iterations);
+  PetscCheck(m->max_iterations >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sreturn_max_it must be >= 0 (0: the default, 100), got %" PetscInt_FMT, pre, m->max_iterations);
   switch (m->hardening) {
   case IND_HARDENING_VOCE:
     PetscCheck(m->Rs > 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-%ssaturation must be > 0 (GPa), got %g", pre, (double)m->Rs);

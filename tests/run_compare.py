@@ -7,39 +7,28 @@
 Without --reference the first rank count is the reference for the others (parallel consistency);
 with it, every run is compared against the committed file (regression). Exit 0 when all agree.
 """
-import argparse
 import os
 import subprocess
 import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+import indentrun  # noqa: E402
+
 H5COMPARE = os.path.join(HERE, "..", "scripts", "h5compare.py")
 
 
 def main():
-    argv = sys.argv[1:]
-    if "--" not in argv:
-        sys.exit("run_compare.py: indent options must follow --")
-    split = argv.index("--")
-    ap = argparse.ArgumentParser()
-    ap.add_argument("--mpiexec", required=True)
-    ap.add_argument("--indent", required=True)
-    ap.add_argument("--workdir", required=True)
+    ap, argv, options = indentrun.parser_and_options("run_compare.py")
     ap.add_argument("--np", default="1,2,3")
     ap.add_argument("--reference")
     ap.add_argument("--field", action="append", default=[])
-    args = ap.parse_args(argv[:split])
-    options = argv[split + 1:]
+    args = ap.parse_args(argv)
 
     outputs = []
     for np_ in [int(n) for n in args.np.split(",")]:
         out = os.path.join(args.workdir, f"np{np_}")
-        cmd = [args.mpiexec, "-n", str(np_), args.indent, *options, "-output_dir", out, "-options_left"]
-        print("+", " ".join(cmd), flush=True)
-        run = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-        print(run.stdout, end="")
-        if run.returncode != 0 or "WARNING! There are" in run.stdout:
-            print(f"FAIL: indent on {np_} ranks exited with {run.returncode}")
+        if not indentrun.run(args, np_, options, out, f"indent on {np_} ranks"):
             return 1
         outputs.append((np_, os.path.join(out, "indent.h5")))
 

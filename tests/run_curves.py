@@ -8,48 +8,31 @@ With several --np values the same run is repeated on each rank count and compare
 With --variant, each variant's options are added to the common ones (run on the first rank count)
 and every variant is compared with the first. Exit 0 when all curves agree.
 """
-import argparse
 import os
-import subprocess
 import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 import compare_curves  # noqa: E402
+import indentrun  # noqa: E402
 
 
 def main():
-    argv = sys.argv[1:]
-    if "--" not in argv:
-        sys.exit("run_curves.py: indent options must follow --")
-    split = argv.index("--")
-    ap = argparse.ArgumentParser()
-    ap.add_argument("--mpiexec", required=True)
-    ap.add_argument("--indent", required=True)
-    ap.add_argument("--workdir", required=True)
+    ap, argv, common = indentrun.parser_and_options("run_curves.py")
     ap.add_argument("--np", default="1")
     ap.add_argument("--rtol", type=float, required=True)
     ap.add_argument("--atol", type=float, default=0.0)
     ap.add_argument("--variant", action="append", default=[])
-    args = ap.parse_args(argv[:split])
-    common = argv[split + 1:]
+    args = ap.parse_args(argv)
     nps = [int(n) for n in args.np.split(",")]
-    runs = []
     if args.variant:
-        for v in args.variant:
-            name, opts = v.split(":", 1)
-            runs.append((name, nps[0], opts.split()))
+        runs = [(v.split(":", 1)[0], nps[0], v.split(":", 1)[1].split()) for v in args.variant]
     else:
         runs = [(f"np{n}", n, []) for n in nps]
     csvs = []
     for name, n, opts in runs:
         out = os.path.join(args.workdir, name)
-        cmd = [args.mpiexec, "-n", str(n), args.indent, *common, *opts, "-output_dir", out, "-options_left"]
-        print("+", " ".join(cmd), flush=True)
-        run = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-        print(run.stdout, end="")
-        if run.returncode != 0 or "WARNING! There are" in run.stdout:
-            print(f"FAIL: run {name} exited with {run.returncode}")
+        if not indentrun.run(args, n, [*common, *opts], out, f"run {name}"):
             return 1
         csvs.append((name, os.path.join(out, "load_displacement.csv")))
     failed = 0

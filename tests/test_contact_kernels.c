@@ -75,6 +75,17 @@ static void CheckGradient(const char *name, const IndIndenter *ind, PetscReal sc
   Report(what, PetscMax(worst_lip, 0.0), 1e-9);
 }
 
+/* Unit direction, pointing up, of the edge shared by faces i and j of a pyramid. */
+static void EdgeUp(const IndIndenter *b, PetscInt i, PetscInt j, PetscReal e[3])
+{
+  PetscReal l;
+  e[0] = b->m[i][1] * b->m[j][2] - b->m[i][2] * b->m[j][1];
+  e[1] = b->m[i][2] * b->m[j][0] - b->m[i][0] * b->m[j][2];
+  e[2] = b->m[i][0] * b->m[j][1] - b->m[i][1] * b->m[j][0];
+  l    = PetscSqrtReal(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
+  for (int k = 0; k < 3; ++k) e[k] /= (e[2] < 0 ? -l : l);
+}
+
 static void CheckExactDistances(void)
 {
   IndIndenter s, c, b;
@@ -116,37 +127,19 @@ static void CheckExactDistances(void)
   {
     const PetscReal apex[3] = {7.0, -3.0, lowest_s + 50.0};
     for (PetscInt i = 0; i < 3; ++i) {
-      const PetscInt j  = (i + 1) % 3;
-      PetscReal      e[3], w[3], lw, le, f[3], mid[3];
-      /* edge direction (upwards) and the bisector of the two face normals */
-      e[0] = b.m[i][1] * b.m[j][2] - b.m[i][2] * b.m[j][1];
-      e[1] = b.m[i][2] * b.m[j][0] - b.m[i][0] * b.m[j][2];
-      e[2] = b.m[i][0] * b.m[j][1] - b.m[i][1] * b.m[j][0];
-      le   = PetscSqrtReal(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
-      for (int k = 0; k < 3; ++k) e[k] /= (e[2] < 0 ? -le : le);
-      for (int k = 0; k < 3; ++k) w[k] = b.m[i][k] + b.m[j][k];
+      PetscReal e[3], e2[3], w[3], lw, f[3];
+      EdgeUp(&b, i, (i + 1) % 3, e);  /* the edge between faces i and i+1 */
+      EdgeUp(&b, (i + 2) % 3, i, e2); /* face i's other edge */
+      for (int k = 0; k < 3; ++k) w[k] = b.m[i][k] + b.m[(i + 1) % 3][k];
       lw = PetscSqrtReal(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
       for (int k = 0; k < 3; ++k) w[k] /= lw;
       for (PetscReal d = -10; d <= 10; d += 2.5) {
-        /* on the edge, 200 nm up, then out along the bisector: distance R + d from the core */
+        /* on the edge, 200 nm up, then out along the bisector of the faces: distance R + d from the core */
         for (int k = 0; k < 3; ++k) x[k] = apex[k] + 200 * e[k] + (50 + d) * w[k];
         IndIndenterGap(&b, x, &g, n);
         worst = PetscMax(worst, PetscAbsReal(g - d));
-        /* on face i, between its two edges: the midpoint of the two edge points at the same height */
-        for (int k = 0; k < 3; ++k) {
-          mid[k] = apex[k] + 200 * e[k];
-          f[k]   = 0;
-        }
-        {
-          const PetscInt h = (i + 2) % 3; /* the other edge of face i is between h and i */
-          PetscReal      e2[3], l2;
-          e2[0] = b.m[h][1] * b.m[i][2] - b.m[h][2] * b.m[i][1];
-          e2[1] = b.m[h][2] * b.m[i][0] - b.m[h][0] * b.m[i][2];
-          e2[2] = b.m[h][0] * b.m[i][1] - b.m[h][1] * b.m[i][0];
-          l2    = PetscSqrtReal(e2[0] * e2[0] + e2[1] * e2[1] + e2[2] * e2[2]);
-          for (int k = 0; k < 3; ++k) e2[k] /= (e2[2] < 0 ? -l2 : l2);
-          for (int k = 0; k < 3; ++k) f[k] = 0.5 * (mid[k] + apex[k] + 200 * e2[k]) + (50 + d) * b.m[i][k];
-        }
+        /* on face i, midway between its edges at the same height, then out along its normal */
+        for (int k = 0; k < 3; ++k) f[k] = apex[k] + 100 * (e[k] + e2[k]) + (50 + d) * b.m[i][k];
         IndIndenterGap(&b, f, &g, n);
         worst = PetscMax(worst, PetscAbsReal(g - d) + PetscAbsReal(n[0] - b.m[i][0]) + PetscAbsReal(n[1] - b.m[i][1]) + PetscAbsReal(n[2] - b.m[i][2]));
       }

@@ -1,0 +1,30 @@
+"""Shared by the test drivers that run indent: the `-- <indent options>` split and one checked run."""
+import argparse
+import subprocess
+import sys
+
+
+def parser_and_options(script):
+    """The driver's own arguments come before `--`, indent's after. Returns (ArgumentParser with
+    --mpiexec, --indent, --workdir already added, driver argv, indent options)."""
+    argv = sys.argv[1:]
+    if "--" not in argv:
+        sys.exit(f"{script}: indent options must follow --")
+    split = argv.index("--")
+    ap = argparse.ArgumentParser(prog=script)
+    ap.add_argument("--mpiexec", required=True)
+    ap.add_argument("--indent", required=True)
+    ap.add_argument("--workdir", required=True)
+    return ap, argv[:split], argv[split + 1:]
+
+
+def run(args, nranks, options, out, label):
+    """Runs indent into out; False (with a message) if it failed or left an option unused."""
+    cmd = [args.mpiexec, "-n", str(nranks), args.indent, *options, "-output_dir", out, "-options_left"]
+    print("+", " ".join(cmd), flush=True)
+    proc = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    print(proc.stdout, end="")
+    if proc.returncode != 0 or "WARNING! There are" in proc.stdout:
+        print(f"FAIL: {label} exited with {proc.returncode}")
+        return False
+    return True
