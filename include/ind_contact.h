@@ -27,6 +27,8 @@ typedef struct {
   PetscReal penetration;          /* largest -gap, nm (0 when none penetrates) */
   PetscReal change;               /* |R_new - R| / |R_new| of the update (0 when both vanish) */
   PetscReal area;                 /* projected area of the contact nodes' tributary faces, nm^2, times symmetry */
+  PetscReal pileup;               /* largest height of a contact-surface node above the undeformed surface, nm */
+  PetscReal deepest;              /* largest depth of a contact-surface node below it, nm */
 } IndContactSummary;
 
 typedef struct _p_IndContact *IndContact;
@@ -36,7 +38,9 @@ struct _p_IndContact {
   IndUzawa    variant;
   PetscReal   mu;        /* Coulomb friction coefficient */
   PetscBool   gap_current; /* gap at X + u (default), or at the undeformed horizontal position */
-  PetscReal   rho_scale; /* rho = rho_scale * mean stiffness diagonal of the node */
+  PetscReal   rho_scale; /* current rho = rho_scale * mean stiffness diagonal of the node */
+  PetscReal   rho_max;   /* augmented: the scale the outer loop grows to (-contact_rho_scale) */
+  PetscReal   rho_min;   /* augmented: the scale each step starts from (-contact_rho_initial) */
   PetscReal   rtol;      /* outer loop: relative change of the reactions */
   PetscReal   pen_rtol;  /* outer loop: largest penetration, relative to the largest depth */
   PetscReal   pen_atol;  /* the same in nm, computed at setup */
@@ -47,8 +51,9 @@ struct _p_IndContact {
   PetscInt   *row;      /* index of each node's x dof in the owned part of a global vector */
   PetscInt   *grow;     /* its global row */
   PetscReal  *X;        /* 3n reference positions */
-  PetscReal  *rho;      /* n */
+  PetscReal  *kdiag;    /* n mean stiffness diagonals: rho_i = rho_scale * kdiag_i */
   PetscReal  *R, *Rc;   /* 3n current and committed reactions */
+  PetscReal  *Rs;       /* 3n reactions saved at the start of an outer iteration */
   PetscReal  *Uc;       /* 3n displacement at the committed state */
   PetscReal  *A;        /* n horizontal tributary areas (projected on z) */
   PetscInt   *status;   /* n, IndContactStatus of the last update */
@@ -67,5 +72,12 @@ PetscErrorCode IndContactResidual(IndContact contact, Vec U, Vec F);
 PetscErrorCode IndContactJacobian(IndContact contact, Vec U, Mat J);
 /* The outer update: R <- projection of the predictor at U; fills the summary. */
 PetscErrorCode IndContactUpdate(IndContact contact, Vec U, IndContactSummary *summary);
+/* Contact pressure (normal reaction over tributary area, GPa) and status (0 open, 1 stick, 2 slip) of
+   each contact node at U, in the first two components of its node in the global vector G (zero
+   elsewhere). */
+PetscErrorCode IndContactNodalFields(IndContact contact, Vec U, Vec G);
+/* Save / restore the current reactions around an outer iteration that may be retried. */
+PetscErrorCode IndContactSaveReactions(IndContact contact);
+PetscErrorCode IndContactRestoreReactions(IndContact contact);
 PetscErrorCode IndContactCommit(IndContact contact, Vec U);
 PetscErrorCode IndContactRollback(IndContact contact);

@@ -17,6 +17,8 @@ typedef struct {
   PetscReal depth_max;  /* -load_depth, nm (0: no indenter) */
   PetscReal dt;         /* increment of the next attempt */
   PetscReal dt_initial; /* 1 / -load_steps */
+  PetscReal dt_unload;  /* 1 / -load_unload_steps: the unloading segment's first increment */
+  PetscReal unload_growth; /* factor on the increment after each accepted unloading step */
   PetscReal dt_min, dt_max;
   PetscReal cutback; /* dt *= cutback after a failure */
   PetscReal growth;  /* dt *= growth after an easy step, up to dt_max */

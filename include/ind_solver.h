@@ -28,6 +28,10 @@ struct _p_IndSolver {
   PetscReal    load_factor; /* of the step being solved */
   PetscInt     nfailed;     /* quadrature points, all ranks, whose return map failed in the last residual */
   PetscInt     nplastic;    /* quadrature points, all ranks, yielding in the last residual */
+  PetscInt     stall_its;   /* Newton fails after this many iterations without a new smallest residual */
+  PetscReal    fmin;        /* smallest residual norm of the current Newton solve */
+  PetscInt     itmin;       /* its iteration */
+  PetscBool    stalled;     /* the last Newton solve was stopped by the stall test */
 };
 
 /* depth_max sets the contact loop's penetration tolerance. */

@@ -214,11 +214,21 @@ PetscErrorCode IndContactCreate(IndMesh mesh, IndDisc disc, IndBC bc, IndContact
   PetscCall(PetscOptionsString("-contact_surface", "Surface whose nodes may touch the indenter", "", surface, surface, sizeof(surface), NULL));
   PetscCall(PetscOptionsReal("-contact_friction", "Coulomb friction coefficient", "", c->mu, &c->mu, NULL));
   PetscCall(PetscOptionsEnum("-contact_uzawa", "Outer loop: fixed_point (frozen reactions) or augmented (projected reactions in Newton)", "", IndUzawaTypes, (PetscEnum)c->variant, (PetscEnum *)&c->variant, NULL));
-  /* The augmented loop contracts faster the larger rho is; the fixed point diverges once rho exceeds
+  /* The augmented loop contracts faster the larger rho is, but Newton's residual then jumps by rho
+     times the gap where a node's status changes, and with friction it cycled between stick and slip
+     (Berkovich into a plastic film, mu = 0.1: no step past 2.5 nm at 100). So each step starts at
+     rho_min, where Newton is robust, and the outer loop grows rho tenfold per iteration up to
+     rho_max once the contact state has settled. The fixed point diverges once rho exceeds
      2 / (largest eigenvalue of the contact compliance), about the stiffness diagonal already. */
-  c->rho_scale = c->variant == IND_UZAWA_AUGMENTED ? 100.0 : 0.3;
+  c->rho_max   = c->variant == IND_UZAWA_AUGMENTED ? 100.0 : 0.3;
+  c->rho_min   = c->variant == IND_UZAWA_AUGMENTED ? 1.0 : 0.3;
   c->max_outer = c->variant == IND_UZAWA_AUGMENTED ? 50 : 200;
-  PetscCall(PetscOptionsReal("-contact_rho_scale", "rho = scale * mean stiffness diagonal of each contact node (default 100 augmented, 0.3 fixed_point)", "", c->rho_scale, &c->rho_scale, NULL));
+  PetscCall(PetscOptionsReal("-contact_rho_scale", "rho = scale * mean stiffness diagonal of each contact node (augmented: the largest, default 100; fixed_point: default 0.3)", "", c->rho_max, &c->rho_max, NULL));
+  if (c->variant == IND_UZAWA_AUGMENTED) {
+    c->rho_min = PetscMin(c->rho_min, c->rho_max);
+    PetscCall(PetscOptionsReal("-contact_rho_initial", "Augmented: the scale of rho at the start of each step, grown tenfold per outer iteration up to -contact_rho_scale", "", c->rho_min, &c->rho_min, NULL));
+  } else c->rho_min = c->rho_max;
+  c->rho_scale = c->rho_min;
   PetscCall(PetscOptionsReal("-contact_uzawa_rtol", "Outer loop: relative change of the reactions", "", c->rtol, &c->rtol, NULL));
   PetscCall(PetscOptionsReal("-contact_penetration_rtol", "Outer loop: largest penetration relative to the largest depth", "", c->pen_rtol, &c->pen_rtol, NULL));
   {
@@ -240,7 +250,8 @@ PetscErrorCode IndContactCreate(IndMesh mesh, IndDisc disc, IndBC bc, IndContact
   PetscCheck(!IndIndenterSetUp(&ind), comm, PETSC_ERR_ARG_OUTOFRANGE, "-indenter_type %s: bad -indenter_radius or -indenter_angle", IndIndenterTypes[ind.type]);
   PetscCheck(!has_axis || naxis == 2, comm, PETSC_ERR_ARG_WRONG, "-indenter_axis needs two values x,y");
   PetscCheck(c->mu >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-contact_friction must be >= 0, got %g", (double)c->mu);
-  PetscCheck(c->rho_scale > 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-contact_rho_scale must be > 0, got %g", (double)c->rho_scale);
+  PetscCheck(c->rho_max > 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-contact_rho_scale must be > 0, got %g", (double)c->rho_max);
+  PetscCheck(c->rho_min > 0 && c->rho_min <= c->rho_max, comm, PETSC_ERR_ARG_OUTOFRANGE, "-contact_rho_initial must lie in (0, -contact_rho_scale %g], got %g", (double)c->rho_max, (double)c->rho_min);
   PetscCheck(c->rtol > 0 && c->pen_rtol > 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-contact_uzawa_rtol and -contact_penetration_rtol must be > 0");
   PetscCheck(c->max_outer >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-contact_uzawa_max_it must be >= 1, got %" PetscInt_FMT, c->max_outer);
   PetscCheck(!has_sym || symmetry >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-contact_symmetry_factor must be >= 1, got %g", (double)symmetry);
@@ -259,8 +270,8 @@ PetscErrorCode IndContactCreate(IndMesh mesh, IndDisc disc, IndBC bc, IndContact
   PetscCall(VecGetArrayRead(nodes, &x));
   for (PetscInt k = 0; k < n; k += 3)
     if (PetscRealPart(g[k]) > 0.5) c->n++;
-  PetscCall(PetscMalloc5(c->n, &c->row, c->n, &c->grow, 3 * c->n, &c->X, c->n, &c->rho, c->n, &c->A));
-  PetscCall(PetscCalloc4(3 * c->n, &c->R, 3 * c->n, &c->Rc, 3 * c->n, &c->Uc, c->n, &c->status));
+  PetscCall(PetscMalloc5(c->n, &c->row, c->n, &c->grow, 3 * c->n, &c->X, c->n, &c->kdiag, c->n, &c->A));
+  PetscCall(PetscCalloc5(3 * c->n, &c->R, 3 * c->n, &c->Rc, 3 * c->n, &c->Rs, 3 * c->n, &c->Uc, c->n, &c->status));
   c->n = 0;
   {
     PetscReal top = -PETSC_MAX_REAL;
@@ -291,8 +302,8 @@ PetscErrorCode IndContactDestroy(IndContact *c)
 {
   PetscFunctionBeginUser;
   if (!*c) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCall(PetscFree5((*c)->row, (*c)->grow, (*c)->X, (*c)->rho, (*c)->A));
-  PetscCall(PetscFree4((*c)->R, (*c)->Rc, (*c)->Uc, (*c)->status));
+  PetscCall(PetscFree5((*c)->row, (*c)->grow, (*c)->X, (*c)->kdiag, (*c)->A));
+  PetscCall(PetscFree5((*c)->R, (*c)->Rc, (*c)->Rs, (*c)->Uc, (*c)->status));
   PetscCall(PetscFree(*c));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -306,7 +317,7 @@ PetscErrorCode IndContactSetUp(IndContact c, Mat K, PetscReal depth_max)
   PetscCall(MatCreateVecs(K, &d, NULL));
   PetscCall(MatGetDiagonal(K, d));
   PetscCall(VecGetArrayRead(d, &v));
-  for (PetscInt i = 0; i < c->n; ++i) c->rho[i] = c->rho_scale * PetscRealPart(v[c->row[i]] + v[c->row[i] + 1] + v[c->row[i] + 2]) / 3.0;
+  for (PetscInt i = 0; i < c->n; ++i) c->kdiag[i] = PetscRealPart(v[c->row[i]] + v[c->row[i] + 1] + v[c->row[i] + 2]) / 3.0;
   PetscCall(VecRestoreArrayRead(d, &v));
   PetscCall(VecDestroy(&d));
   c->pen_atol = c->pen_rtol * depth_max;
@@ -368,7 +379,7 @@ static void NodeSolve(IndContact c, PetscInt i, const PetscScalar *u, NodeState 
   rl[0] = Rv[0] * ns->n[0] + Rv[1] * ns->n[1] + Rv[2] * ns->n[2];
   rl[1] = Rv[0] * ns->t1[0] + Rv[1] * ns->t1[1] + Rv[2] * ns->t1[2];
   rl[2] = Rv[0] * ns->t2[0] + Rv[1] * ns->t2[1] + Rv[2] * ns->t2[2];
-  IndBipotentialPredictor(c->mu, c->rho[i], rl, ns->gap, dut, tau);
+  IndBipotentialPredictor(c->mu, c->rho_scale * c->kdiag[i], rl, ns->gap, dut, tau);
   ns->status = IndBipotentialProject(c->mu, tau, ns->r, ns->D);
   for (int d = 0; d < 3; ++d) ns->f[d] = ns->r[0] * ns->n[d] + ns->r[1] * ns->t1[d] + ns->r[2] * ns->t2[d];
 }
@@ -425,7 +436,7 @@ PetscErrorCode IndContactJacobian(IndContact c, Vec U, Mat J)
       for (int a = 0; a < 3; ++a)
         for (int b = 0; b < 3; ++b) {
           B[3 * a + b] = 0;
-          for (int k = 0; k < 3; ++k) B[3 * a + b] += c->rho[i] * QD[a][k] * G[k][b];
+          for (int k = 0; k < 3; ++k) B[3 * a + b] += c->rho_scale * c->kdiag[i] * QD[a][k] * G[k][b];
         }
       PetscCall(MatSetValues(J, 3, rows, 3, rows, B, ADD_VALUES));
     }
@@ -439,7 +450,7 @@ PetscErrorCode IndContactJacobian(IndContact c, Vec U, Mat J)
 PetscErrorCode IndContactUpdate(IndContact c, Vec U, IndContactSummary *sum)
 {
   const PetscScalar *u;
-  PetscReal          red[6] = {0, 0, 0, 0, 0, 0}; /* |dR|^2, |R|^2, -Fz, area, penetration (max) */
+  PetscReal          red[7] = {0, 0, 0, 0, 0, -PETSC_MAX_REAL, -PETSC_MAX_REAL}; /* |dR|^2, |R|^2, -Fz, area; maxima: penetration, height, depth */
   PetscInt           cnt[3] = {0, 0, 0};
 
   PetscFunctionBeginUser;
@@ -457,10 +468,12 @@ PetscErrorCode IndContactUpdate(IndContact c, Vec U, IndContactSummary *sum)
     cnt[ns.status]++;
     if (ns.status != IND_CONTACT_OPEN) red[3] += c->A[i];
     red[4] = PetscMax(red[4], -ns.gap);
+    red[5] = PetscMax(red[5], c->X[3 * i + 2] + PetscRealPart(u[c->row[i] + 2]) - c->indenter.surface);
+    red[6] = PetscMax(red[6], c->indenter.surface - c->X[3 * i + 2] - PetscRealPart(u[c->row[i] + 2]));
   }
   PetscCall(VecRestoreArrayRead(U, &u));
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, red, 4, MPIU_REAL, MPIU_SUM, c->comm));
-  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, red + 4, 1, MPIU_REAL, MPIU_MAX, c->comm));
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, red + 4, 3, MPIU_REAL, MPIU_MAX, c->comm));
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, cnt, 3, MPIU_INT, MPI_SUM, c->comm));
   sum->stick       = cnt[IND_CONTACT_STICK];
   sum->slip        = cnt[IND_CONTACT_SLIP];
@@ -469,6 +482,8 @@ PetscErrorCode IndContactUpdate(IndContact c, Vec U, IndContactSummary *sum)
   sum->load        = c->symmetry * red[2];
   sum->area        = c->symmetry * red[3];
   sum->penetration = PetscMax(red[4], 0.0);
+  sum->pileup      = PetscMax(red[5], 0.0);
+  sum->deepest     = PetscMax(red[6], 0.0);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -493,5 +508,39 @@ PetscErrorCode IndContactRollback(IndContact c)
   PetscFunctionBeginUser;
   PetscCall(PetscArraycpy(c->R, c->Rc, 3 * c->n));
   c->indenter.depth = c->depth_c;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode IndContactNodalFields(IndContact c, Vec U, Vec G)
+{
+  const PetscScalar *u;
+  PetscScalar       *g;
+
+  PetscFunctionBeginUser;
+  PetscCall(VecZeroEntries(G));
+  PetscCall(VecGetArrayRead(U, &u));
+  PetscCall(VecGetArray(G, &g));
+  for (PetscInt i = 0; i < c->n; ++i) {
+    NodeState ns;
+    NodeSolve(c, i, u + c->row[i], &ns);
+    g[c->row[i]]     = c->A[i] > 0 ? ns.r[0] / c->A[i] : 0.0;
+    g[c->row[i] + 1] = (PetscReal)ns.status;
+  }
+  PetscCall(VecRestoreArray(G, &g));
+  PetscCall(VecRestoreArrayRead(U, &u));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode IndContactSaveReactions(IndContact c)
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscArraycpy(c->Rs, c->R, 3 * c->n));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode IndContactRestoreReactions(IndContact c)
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscArraycpy(c->R, c->Rs, 3 * c->n));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -2,7 +2,8 @@
 
 PetscErrorCode IndLoadPathSetFromOptions(MPI_Comm comm, PetscBool unload_default, IndLoadPath *lp)
 {
-  PetscInt steps = 1;
+  PetscInt steps = 1, unload_steps = 0;
+  PetscBool has_unload_steps;
 
   PetscFunctionBeginUser;
   PetscCall(PetscMemzero(lp, sizeof(*lp)));
@@ -11,14 +12,19 @@ PetscErrorCode IndLoadPathSetFromOptions(MPI_Comm comm, PetscBool unload_default
   lp->easy_its     = 5;
   lp->max_cutbacks = 10;
   lp->unload       = unload_default;
+  lp->unload_growth = 1.2;
   PetscOptionsBegin(comm, NULL, "Load stepping", "Load");
   PetscCall(PetscOptionsReal("-load_depth", "Largest indenter depth (nm), reached at the end of loading", "", lp->depth_max, &lp->depth_max, NULL));
   PetscCall(PetscOptionsReal("-load_hold", "Length of the hold at full load, in units of the loading segment", "", lp->hold, &lp->hold, NULL));
   PetscCall(PetscOptionsBool("-load_unload", "Unload after loading (and holding)", "", lp->unload, &lp->unload, NULL));
   PetscCall(PetscOptionsInt("-load_steps", "Number of load steps when none is cut back", "", steps, &steps, NULL));
+  unload_steps = steps;
+  PetscCall(PetscOptionsInt("-load_unload_steps", "The first unloading increment is 1/N of the depth (default -load_steps): Oliver-Pharr fits the top of the unloading curve, which falls steeply", "", unload_steps, &unload_steps, &has_unload_steps));
+  PetscCall(PetscOptionsReal("-load_unload_growth", "Factor on the increment after each accepted unloading step (up to the loading increment)", "", lp->unload_growth, &lp->unload_growth, NULL));
   lp->dt_initial = 1.0 / PetscMax(steps, 1);
+  lp->dt_unload  = 1.0 / PetscMax(unload_steps, 1);
   lp->dt_max     = lp->dt_initial;
-  lp->dt_min     = lp->dt_initial / 1024;
+  lp->dt_min     = PetscMin(lp->dt_initial, lp->dt_unload) / 1024;
   PetscCall(PetscOptionsReal("-load_max_increment", "Largest load-factor increment a step may grow to", "", lp->dt_max, &lp->dt_max, NULL));
   PetscCall(PetscOptionsReal("-load_min_increment", "Smallest load-factor increment before giving up", "", lp->dt_min, &lp->dt_min, NULL));
   PetscCall(PetscOptionsReal("-load_cutback", "Factor on the increment after a failed step", "", lp->cutback, &lp->cutback, NULL));
@@ -27,12 +33,14 @@ PetscErrorCode IndLoadPathSetFromOptions(MPI_Comm comm, PetscBool unload_default
   PetscCall(PetscOptionsInt("-load_max_cutbacks", "Failed attempts in a row before the run stops", "", lp->max_cutbacks, &lp->max_cutbacks, NULL));
   PetscOptionsEnd();
   PetscCheck(steps >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-load_steps must be >= 1, got %" PetscInt_FMT, steps);
+  PetscCheck(unload_steps >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-load_unload_steps must be >= 1, got %" PetscInt_FMT, unload_steps);
   PetscCheck(lp->hold >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-load_hold must be >= 0, got %g", (double)lp->hold);
   PetscCheck(lp->depth_max >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-load_depth must be >= 0 (nm), got %g", (double)lp->depth_max);
   lp->t_end = 1.0 + lp->hold + (lp->unload ? 1.0 : 0.0);
   PetscCheck(lp->dt_max > 0 && lp->dt_max <= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-load_max_increment must lie in (0, 1], got %g", (double)lp->dt_max);
-  PetscCheck(lp->dt_min > 0 && lp->dt_min <= lp->dt_initial, comm, PETSC_ERR_ARG_OUTOFRANGE, "-load_min_increment must lie in (0, 1/-load_steps = %g], got %g", (double)lp->dt_initial, (double)lp->dt_min);
+  PetscCheck(lp->dt_min > 0 && lp->dt_min <= PetscMin(lp->dt_initial, lp->dt_unload), comm, PETSC_ERR_ARG_OUTOFRANGE, "-load_min_increment must lie in (0, 1/-load_steps = %g] and (0, 1/-load_unload_steps = %g], got %g", (double)lp->dt_initial, (double)lp->dt_unload, (double)lp->dt_min);
   PetscCheck(lp->cutback > 0 && lp->cutback < 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-load_cutback must lie in (0, 1), got %g", (double)lp->cutback);
+  PetscCheck(lp->unload_growth >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-load_unload_growth must be >= 1, got %g", (double)lp->unload_growth);
   PetscCheck(lp->growth >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-load_growth must be >= 1, got %g", (double)lp->growth);
   PetscCheck(lp->easy_its >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-load_easy_its must be >= 0, got %" PetscInt_FMT, lp->easy_its);
   PetscCheck(lp->max_cutbacks >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-load_max_cutbacks must be >= 0, got %" PetscInt_FMT, lp->max_cutbacks);
@@ -80,7 +88,13 @@ void IndLoadPathAccept(IndLoadPath *lp, PetscInt its)
   lp->t = IndLoadPathTarget(lp);
   lp->accepted++;
   lp->cutbacks_in_a_row = 0;
-  if (its <= lp->easy_its) lp->dt = PetscMin(lp->dt * lp->growth, lp->dt_max);
+  if (IndLoadPathUnloading(lp, lp->t + 0.5 * lp->dt_min)) {
+    /* Unloading: fine steps at the top of the curve, where the load falls fastest and Oliver-Pharr
+       fits it, growing geometrically since the curve flattens (whatever Newton needed: the
+       contact shrinks as unloading goes on). */
+    if (lp->t <= 1.0 + lp->hold + 0.5 * lp->dt_min) lp->dt = lp->dt_unload;
+    else lp->dt = PetscMin(lp->dt * lp->unload_growth, PetscMax(lp->dt_max, lp->dt_unload));
+  } else if (its <= lp->easy_its) lp->dt = PetscMin(lp->dt * lp->growth, lp->dt_max);
 }
 
 PetscErrorCode IndLoadPathReject(IndLoadPath *lp, MPI_Comm comm, const char why[])

@@ -46,6 +46,31 @@ static PetscErrorCode FormJacobian(SNES snes, Vec U, Mat A, Mat P, void *ctx)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Semi-smooth Newton can cycle for ever between contact states (stick, slip, open) of a few nodes,
+   with the same residuals coming back every 2 to 5 iterations. Stopping after -newton_stall_its
+   iterations without a new smallest residual lets the contact loop retry with a smaller rho (or the
+   load step be cut) long before -snes_max_it. */
+static PetscErrorCode ConvergedUnlessStalled(SNES snes, PetscInt it, PetscReal xnorm, PetscReal snorm, PetscReal fnorm, SNESConvergedReason *reason, void *ctx)
+{
+  IndSolver s = (IndSolver)ctx;
+
+  PetscFunctionBeginUser;
+  PetscCall(SNESConvergedDefault(snes, it, xnorm, snorm, fnorm, reason, NULL));
+  if (it == 0) {
+    s->fmin    = fnorm;
+    s->itmin   = 0;
+    s->stalled = PETSC_FALSE;
+  } else if (fnorm < 0.99 * s->fmin) {
+    s->fmin  = fnorm;
+    s->itmin = it;
+  }
+  if (*reason == SNES_CONVERGED_ITERATING && s->stall_its > 0 && it - s->itmin >= s->stall_its) {
+    *reason    = SNES_DIVERGED_DTOL;
+    s->stalled = PETSC_TRUE;
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode IndSolverCreate(DM dm, IndAssembly assembly, IndBC bc, IndContact contact, PetscReal depth_max, IndSolver *out)
 {
   IndSolver    s;
@@ -110,6 +135,12 @@ PetscErrorCode IndSolverCreate(DM dm, IndAssembly assembly, IndBC bc, IndContact
     PetscCall(SNESGetLineSearch(s->snes, &ls));
     PetscCall(SNESLineSearchSetType(ls, SNESLINESEARCHBASIC));
   }
+  s->stall_its = 10;
+  PetscOptionsBegin(PetscObjectComm((PetscObject)dm), NULL, "Newton", "Solver");
+  PetscCall(PetscOptionsInt("-newton_stall_its", "Newton fails after this many iterations without a 1% smaller residual (0: never)", "", s->stall_its, &s->stall_its, NULL));
+  PetscOptionsEnd();
+  PetscCheck(s->stall_its >= 0, PetscObjectComm((PetscObject)dm), PETSC_ERR_ARG_OUTOFRANGE, "-newton_stall_its must be >= 0, got %" PetscInt_FMT, s->stall_its);
+  PetscCall(SNESSetConvergenceTest(s->snes, ConvergedUnlessStalled, s, NULL));
   PetscCall(SNESSetFromOptions(s->snes));
   if (contact) {
     /* rho from the stiffness of the undeformed body, before any condition touches its diagonal */
@@ -126,6 +157,8 @@ PetscErrorCode IndSolverSolve(IndSolver s, PetscReal load_factor, Vec U, IndSolv
   IndContact c           = s->contact;
   PetscReal  last_change = PETSC_MAX_REAL, atol = 0, rtol = 0, stol = 0;
   PetscInt   maxit = 0, maxf = 0;
+  PetscBool  augmented = c && c->variant == IND_UZAWA_AUGMENTED ? PETSC_TRUE : PETSC_FALSE;
+  Vec        Usave = NULL;
 
   PetscFunctionBeginUser;
   PetscCall(PetscMemzero(r, sizeof(*r)));
@@ -147,17 +180,38 @@ PetscErrorCode IndSolverSolve(IndSolver s, PetscReal load_factor, Vec U, IndSolv
     PetscCall(DMRestoreGlobalVector(s->dm, &F));
     PetscCall(SNESSetTolerances(s->snes, PetscMax(atol, 1e-3 * rtol * fnorm), rtol, stol, maxit, maxf));
   }
+  if (augmented) {
+    c->rho_scale = c->rho_min;
+    PetscCall(DMGetGlobalVector(s->dm, &Usave));
+  }
   for (PetscInt k = 1; k <= (c ? c->max_outer : 1); ++k) {
     PetscInt its, lits;
+    if (augmented) {
+      PetscCall(VecCopy(U, Usave));
+      PetscCall(IndContactSaveReactions(c));
+    }
     PetscCall(SNESSolve(s->snes, NULL, U));
     PetscCall(SNESGetConvergedReason(s->snes, &r->reason));
     PetscCall(SNESGetIterationNumber(s->snes, &its));
     PetscCall(SNESGetLinearSolveIterations(s->snes, &lits));
     r->newton += its;
     r->linear += lits;
+    r->outer = k;
+    if (r->reason <= 0 && r->reason != SNES_DIVERGED_FUNCTION_DOMAIN && augmented && c->rho_scale > 1e-2 * c->rho_min * (1 + 1e-12)) {
+      /* Newton failed at a rho too large for it here: redo this outer iteration from its start
+         with rho ten times smaller (down to rho_min / 100, where the augmented loop is close to the
+         fixed point's robust one). */
+      PetscCall(VecCopy(Usave, U));
+      PetscCall(IndContactRestoreReactions(c));
+      c->rho_scale *= 0.1;
+      if (c->monitor) PetscCall(PetscPrintf(c->comm, "    uzawa %2" PetscInt_FMT ": newton %2" PetscInt_FMT " failed (%s), retried with rho scale %g\n", k, its, s->stalled ? "stalled" : SNESConvergedReasons[r->reason], (double)c->rho_scale));
+      continue;
+    }
     if (r->reason <= 0) {
       if (c) PetscCall(SNESSetTolerances(s->snes, atol, rtol, stol, maxit, maxf));
+      if (Usave) PetscCall(DMRestoreGlobalVector(s->dm, &Usave));
       if (r->reason == SNES_DIVERGED_FUNCTION_DOMAIN) PetscCall(PetscSNPrintf(r->why, sizeof(r->why), "return map failed at %" PetscInt_FMT " quadrature points", s->nfailed));
+      else if (s->stalled) PetscCall(PetscSNPrintf(r->why, sizeof(r->why), "Newton stalled: no smaller residual in %" PetscInt_FMT " iterations (-newton_stall_its)%s", s->stall_its, c ? " in the contact loop" : ""));
       else PetscCall(PetscSNPrintf(r->why, sizeof(r->why), "Newton: %s after %" PetscInt_FMT " iterations%s", SNESConvergedReasons[r->reason], its, c ? " in the contact loop" : ""));
       PetscFunctionReturn(PETSC_SUCCESS);
     }
@@ -166,23 +220,27 @@ PetscErrorCode IndSolverSolve(IndSolver s, PetscReal load_factor, Vec U, IndSolv
       PetscFunctionReturn(PETSC_SUCCESS);
     }
     PetscCall(IndContactUpdate(c, U, &r->contact));
-    r->outer = k;
     if (c->monitor)
-      PetscCall(PetscPrintf(c->comm, "    uzawa %2" PetscInt_FMT ": newton %2" PetscInt_FMT "  contact %5" PetscInt_FMT " (stick %5" PetscInt_FMT ", slip %5" PetscInt_FMT ")  load %.6e uN  penetration %.3e nm  reaction change %.3e\n", k, its, r->contact.contact, r->contact.stick, r->contact.slip,
-                            (double)(r->contact.load * 1e-3), (double)r->contact.penetration, (double)r->contact.change));
+      PetscCall(PetscPrintf(c->comm, "    uzawa %2" PetscInt_FMT ": newton %2" PetscInt_FMT "  contact %5" PetscInt_FMT " (stick %5" PetscInt_FMT ", slip %5" PetscInt_FMT ")  load %.6e uN  penetration %.3e nm  reaction change %.3e  rho scale %g\n", k, its, r->contact.contact, r->contact.stick, r->contact.slip,
+                            (double)(r->contact.load * 1e-3), (double)r->contact.penetration, (double)r->contact.change, (double)c->rho_scale));
     if (r->contact.change <= c->rtol && r->contact.penetration <= c->pen_atol) {
       r->converged = PETSC_TRUE;
       PetscCall(SNESSetTolerances(s->snes, atol, rtol, stol, maxit, maxf));
+      if (Usave) PetscCall(DMRestoreGlobalVector(s->dm, &Usave));
       PetscFunctionReturn(PETSC_SUCCESS);
     }
+    /* Once the contact state has settled (reactions within 1% of the last), Newton copes with a
+       larger rho, which speeds up the remaining outer iterations; before, a larger rho mostly made
+       Newton stall (Berkovich unloading: at every step). */
+    if (augmented && r->contact.change < 1e-2) c->rho_scale = PetscMin(c->rho_max, 10.0 * c->rho_scale);
     /* A growing change means rho is past the fixed point's stability limit: halve it, for good. */
     if (c->variant == IND_UZAWA_FIXED_POINT && r->contact.change > last_change) {
-      for (PetscInt i = 0; i < c->n; ++i) c->rho[i] *= 0.5;
       c->rho_scale *= 0.5;
       if (c->monitor) PetscCall(PetscPrintf(c->comm, "    uzawa: reaction change grew, rho halved (scale now %g)\n", (double)c->rho_scale));
     }
     last_change = r->contact.change;
   }
+  if (Usave) PetscCall(DMRestoreGlobalVector(s->dm, &Usave));
   PetscCall(SNESSetTolerances(s->snes, atol, rtol, stol, maxit, maxf));
   PetscCall(PetscSNPrintf(r->why, sizeof(r->why), "contact loop: %" PetscInt_FMT " outer iterations, reaction change %.2e (-contact_uzawa_rtol %.1e), penetration %.2e nm (limit %.2e)", c->max_outer, (double)r->contact.change, (double)c->rtol, (double)r->contact.penetration, (double)c->pen_atol));
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -73,6 +73,27 @@ int main(int argc, char **argv)
   IndLoadPathFinish(&lp);
   EXPECT(IndLoadPathDone(&lp), "Finish ends the program");
   PetscCall(PetscOptionsClearValue(NULL, "-load_hold"));
+  /* Unloading in steps of its own: 2 load steps, then 1/8 growing by 1.5 after every accepted step
+     (hard or not) up to the loading increment 1/2; a cut step still grows from its cut size. */
+  PetscCall(PetscOptionsSetValue(NULL, "-load_steps", "2"));
+  PetscCall(PetscOptionsSetValue(NULL, "-load_unload_steps", "8"));
+  PetscCall(PetscOptionsSetValue(NULL, "-load_unload_growth", "1.5"));
+  PetscCall(IndLoadPathSetFromOptions(PETSC_COMM_SELF, PETSC_TRUE, &lp));
+  {
+    const PetscReal t_expect[] = {0.5, 1.0, 1.125, 1.3125, 1.59375, 1.6640625, 1.98046875, 2.0};
+    for (n = 0; n < 8; ++n) {
+      const PetscReal t = IndLoadPathTarget(&lp);
+      EXPECT(PetscAbsReal(t - t_expect[n]) < 1e-14, "unloading program step %" PetscInt_FMT ": t %.17g, not %g", n, (double)t, (double)t_expect[n]);
+      if (n == 4) {
+        PetscCall(IndLoadPathReject(&lp, PETSC_COMM_SELF, "test"));
+        EXPECT(PetscAbsReal(IndLoadPathTarget(&lp) - 1.453125) < 1e-14, "cut unloading step: target %g", (double)IndLoadPathTarget(&lp));
+      }
+      IndLoadPathAccept(&lp, 50);
+    }
+    EXPECT(IndLoadPathDone(&lp), "the unloading program ends at t = 2");
+  }
+  PetscCall(PetscOptionsClearValue(NULL, "-load_unload_growth"));
+  PetscCall(PetscOptionsClearValue(NULL, "-load_unload_steps"));
   PetscCall(PetscOptionsClearValue(NULL, "-load_steps"));
   PetscCall(PetscPrintf(PETSC_COMM_SELF, "load path: end point, cutback, growth, cap and error paths behave\n"));
   PetscCall(PetscFinalize());
