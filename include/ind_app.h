@@ -10,6 +10,7 @@
 #include "ind_history.h"
 #include "ind_loadpath.h"
 #include "ind_contact.h"
+#include "ind_summary.h"
 
 /* How each step's Newton iteration starts: from the last increment extrapolated when there is one
    (else the tangent response), always from the tangent response, or from the prescribed values alone. */
@@ -45,6 +46,7 @@ struct _p_IndApp {
   IndAssembly  assembly;
   IndSolver    solver;
   IndOutput    output;
+  IndSummary   summary; /* NULL without an indenter */
   Vec          U;     /* displacement (nm), global */
   Vec          Uprev; /* U of the last accepted step, to retry from */
   Vec          dU;    /* increment of the last accepted step, for the predictor */

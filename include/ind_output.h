@@ -2,11 +2,13 @@
 /* HDF5 output through PETSc viewers, with an XDMF index that ParaView opens:
    /geometry/vertices and /topology/cells once, then per output step /fields/displacement (vertices),
    /fields/stress, /fields/strain, /fields/von_mises, /fields/plastic_strain, /fields/back_stress,
-   /fields/yielding (cell averages). Provenance as attributes of "/". */
+   /fields/yielding (cell averages), and with an indenter /fields/contact_pressure and
+   /fields/contact_status (vertices). Provenance as attributes of "/". */
 #include <petscviewerhdf5.h>
 #include "ind_mesh.h"
 #include "ind_disc.h"
 #include "ind_assembly.h"
+#include "ind_contact.h"
 
 #define IND_MAX_OUTPUT_STEPS 100000
 
@@ -16,6 +18,7 @@ typedef struct {
   PetscReal      t, depth, load; /* pseudo-time, nm, uN */
   PetscInt       contact, stick, slip, newton, outer, linear, cutbacks;
   PetscReal      penetration, area; /* nm, nm^2 */
+  PetscReal      pileup, deepest;   /* nm: highest and lowest point of the contact surface vs the undeformed one */
   PetscLogDouble seconds;
 } IndCurvePoint;
 
@@ -32,12 +35,16 @@ struct _p_IndOutput {
   DM          vdm, c6dm, c1dm; /* vertex (3 dof), cell (6 dof) and cell (1 dof) layouts */
   Vec           Uloc, vloc, disp, stress, strain, vonmises, plastic, back, yielding;
   IndCellFields cells; /* per local cell, filled by the assembly */
+  IndContact    contact;                      /* NULL without an indenter */
+  Vec           Gc, Cloc, c3, pressure, status; /* contact fields: disc layout (global, local), vertex 3-dof and 1-dof */
   PetscInt    nsteps;
   PetscReal  *times;
   PetscInt    nvert, ncell, corners; /* global counts */
 };
 
 PetscErrorCode IndOutputCreate(IndMesh mesh, IndDisc disc, IndOutput *out);
+/* Adds the vertex fields contact_pressure (GPa) and contact_status (0 open, 1 stick, 2 slip). */
+PetscErrorCode IndOutputSetContact(IndOutput out, IndContact contact);
 PetscErrorCode IndOutputDestroy(IndOutput *out);
 /* Appends a line to the curve (rank 0 writes; flushed at once, so a killed run keeps its curve). */
 PetscErrorCode IndOutputCurvePoint(IndOutput out, const IndCurvePoint *point);

@@ -31,6 +31,8 @@ PetscErrorCode IndAppCreate(MPI_Comm comm, IndApp *out)
   PetscCall(IndAssemblyCreate(app->disc, app->mats, app->history, &app->assembly));
   PetscCall(IndSolverCreate(app->disc->dm, app->assembly, app->bc, app->contact, app->path.depth_max, &app->solver));
   PetscCall(IndOutputCreate(app->mesh, app->disc, &app->output));
+  PetscCall(IndOutputSetContact(app->output, app->contact));
+  if (app->contact) PetscCall(IndSummaryCreate(comm, &app->summary));
   PetscCall(DMCreateGlobalVector(app->disc->dm, &app->U));
   PetscCall(PetscObjectSetName((PetscObject)app->U, "displacement"));
   PetscCall(VecZeroEntries(app->U));
@@ -152,13 +154,15 @@ PetscErrorCode IndAppRun(IndApp app)
     }
     PetscCall(IndOutputWriteStep(app->output, app->contact ? r.depth : r.lambda, app->U, app->assembly));
     if (app->contact) {
-      IndCurvePoint p = {lp->accepted, r.t, r.depth, r.contact.load * 1e-3, r.contact.contact, r.contact.stick, r.contact.slip, r.newton, r.outer, r.linear, lp->cutbacks, r.contact.penetration, r.contact.area, r.seconds};
+      IndCurvePoint p = {lp->accepted, r.t, r.depth, r.contact.load * 1e-3, r.contact.contact, r.contact.stick, r.contact.slip, r.newton, r.outer, r.linear, lp->cutbacks, r.contact.penetration, r.contact.area, r.contact.pileup, r.contact.deepest, r.seconds};
       PetscCall(IndOutputCurvePoint(app->output, &p));
+      PetscCall(IndSummaryAddPoint(app->summary, &p));
     }
     if (app->monitor) PetscCall(app->monitor(app, &r, app->monitor_ctx));
     /* Unloading ends once the indenter has left the surface. */
     if (app->contact && IndLoadPathUnloading(lp, t) && r.contact.contact == 0) IndLoadPathFinish(lp);
   }
+  if (app->summary) PetscCall(IndSummaryFinish(app->summary, &app->contact->indenter, app->output->dir, app->output->curve, app->quiet ? PETSC_FALSE : PETSC_TRUE));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -173,6 +177,7 @@ PetscErrorCode IndAppDestroy(IndApp *app)
   PetscCall(IndSolverDestroy(&(*app)->solver));
   PetscCall(IndAssemblyDestroy(&(*app)->assembly));
   PetscCall(IndHistoryDestroy(&(*app)->history));
+  PetscCall(IndSummaryDestroy(&(*app)->summary));
   PetscCall(IndContactDestroy(&(*app)->contact));
   PetscCall(IndBCDestroy(&(*app)->bc));
   PetscCall(IndMaterialsDestroy(&(*app)->mats));

@@ -2,6 +2,7 @@
 #include <math.h>
 #include <petscsf.h>
 #include "ind_mesh.h"
+#include "ind_files.h"
 
 /* gmsh writes "dim tag "name"" lines in $PhysicalNames in both format 2.2 and 4.1, also in binary
    files; PETSc turns the tags into "Cell Sets"/"Face Sets" values, and we give them their names. */
@@ -228,15 +229,18 @@ static PetscErrorCode PerturbInteriorVertices(IndMesh mesh, PetscReal frac)
 PetscErrorCode IndMeshCreate(MPI_Comm comm, IndMesh *out)
 {
   IndMesh   mesh;
-  char      file[PETSC_MAX_PATH_LEN] = "";
-  PetscBool has_file;
+  char      file[PETSC_MAX_PATH_LEN] = "", gmsh[PETSC_MAX_PATH_LEN] = "gmsh", *params[64];
+  PetscInt  nparams = 64;
+  PetscBool has_file, is_geo = PETSC_FALSE;
   PetscInt  refine = 0;
   PetscReal perturb = 0;
 
   PetscFunctionBeginUser;
   PetscCall(PetscCalloc1(1, &mesh));
   PetscOptionsBegin(comm, NULL, "Mesh options", "Mesh");
-  PetscCall(PetscOptionsString("-mesh_file", "gmsh mesh (.msh, format 2.2 or 4.1); the built-in box mesh is used without it", "", file, file, sizeof(file), &has_file));
+  PetscCall(PetscOptionsString("-mesh_file", "gmsh mesh (.msh, format 2.2 or 4.1), or geometry (.geo, meshed by gmsh into <output_dir>/mesh.msh); the built-in box mesh is used without it", "", file, file, sizeof(file), &has_file));
+  PetscCall(PetscOptionsString("-mesh_gmsh", "gmsh executable for a .geo -mesh_file", "", gmsh, gmsh, sizeof(gmsh), NULL));
+  PetscCall(PetscOptionsStringArray("-mesh_geo_parameters", "name=value,... passed to gmsh as -setnumber name value for a .geo -mesh_file", "", params, &nparams, NULL));
   PetscCall(PetscOptionsInt("-mesh_refine", "Uniform refinements after distribution", "", refine, &refine, NULL));
   PetscCall(PetscOptionsReal("-mesh_perturb", "Random displacement of interior vertices of the mesh as read, as a fraction of its shortest edge (tests)", "", perturb, &perturb, NULL));
   PetscOptionsEnd();
@@ -246,8 +250,24 @@ PetscErrorCode IndMeshCreate(MPI_Comm comm, IndMesh *out)
   PetscCall(PetscLogEventBegin(IndLog.mesh_create, 0, 0, 0, 0));
   if (has_file) {
     PetscBool exists;
+    size_t    len;
     PetscCall(PetscTestFile(file, 'r', &exists));
     PetscCheck(exists, comm, PETSC_ERR_FILE_OPEN, "Mesh file '%s' (-mesh_file) does not exist or is not readable", file);
+    PetscCall(PetscStrlen(file, &len));
+    if (len > 4) PetscCall(PetscStrcmp(file + len - 4, ".geo", &is_geo));
+    if (is_geo) {
+      /* The mesh lands in the run's directory, so a run keeps the mesh it was computed on. */
+      char dir[PETSC_MAX_PATH_LEN] = "output", msh[PETSC_MAX_PATH_LEN];
+      PetscCall(PetscOptionsGetString(NULL, NULL, "-output_dir", dir, sizeof(dir), NULL));
+      PetscCall(IndMakeDirectory(comm, dir, "-output_dir"));
+      PetscCall(PetscSNPrintf(msh, sizeof(msh), "%s/mesh.msh", dir));
+      PetscCall(IndGmshMesh(comm, gmsh, file, params, nparams, msh));
+      PetscCall(PetscStrncpy(file, msh, sizeof(file)));
+    }
+  }
+  PetscCheck(!nparams || is_geo, comm, PETSC_ERR_ARG_WRONG, "-mesh_geo_parameters needs a .geo -mesh_file");
+  for (PetscInt i = 0; i < nparams; ++i) PetscCall(PetscFree(params[i]));
+  if (has_file) {
     PetscCall(DMPlexCreateFromFile(comm, file, "indent", PETSC_TRUE, &mesh->dm));
     PetscCall(PetscStrncpy(mesh->source, file, sizeof(mesh->source)));
     PetscCall(ReadGmshPhysicalNames(comm, file, mesh));

@@ -10,7 +10,7 @@ static const char help[] = "indent-op: Oliver-Pharr analysis of a load-displacem
                            "  -indenter_type, -indenter_radius (nm), -indenter_angle (degrees): the area function A(h_c)\n";
 
 #include <string.h>
-#include "ind_oliverpharr.h"
+#include "ind_summary.h"
 #include "ind_indenter.h"
 
 static PetscReal Area(PetscReal hc, void *ctx)
@@ -75,24 +75,15 @@ int main(int argc, char **argv)
   int         code;
 
   PetscCall(PetscInitialize(&argc, &argv, NULL, help));
-  IndOPParamsDefault(&p);
+  PetscCall(IndOPParamsSetFromOptions(PETSC_COMM_WORLD, &p));
   PetscCall(PetscMemzero(&ind, sizeof(ind)));
   PetscOptionsBegin(PETSC_COMM_WORLD, NULL, "Oliver-Pharr analysis", "OP");
   PetscCall(PetscOptionsString("-op_file", "Load-displacement CSV", "", path, path, sizeof(path), &has_file));
-  PetscCall(PetscOptionsReal("-op_fraction", "Fitted part of the unloading load range", "", p.fraction, &p.fraction, NULL));
-  PetscCall(PetscOptionsReal("-op_epsilon", "Contact-depth factor epsilon", "", p.epsilon, &p.epsilon, NULL));
-  PetscCall(PetscOptionsReal("-op_beta", "Shape factor beta", "", p.beta, &p.beta, NULL));
-  PetscCall(PetscOptionsReal("-op_indenter_modulus", "Indenter's Young's modulus (GPa; 0 rigid)", "", p.E_indenter, &p.E_indenter, NULL));
-  PetscCall(PetscOptionsReal("-op_indenter_poisson", "Indenter's Poisson's ratio", "", p.nu_indenter, &p.nu_indenter, NULL));
-  PetscCall(PetscOptionsReal("-op_poisson", "Sample's Poisson's ratio", "", p.nu_sample, &p.nu_sample, NULL));
   PetscCall(PetscOptionsEnum("-indenter_type", "Indenter shape (area function)", "", IndIndenterTypes, (PetscEnum)ind.type, (PetscEnum *)&ind.type, &has_type));
   PetscCall(PetscOptionsReal("-indenter_radius", "Sphere, tip or punch radius (nm)", "", ind.radius, &ind.radius, NULL));
   PetscCall(PetscOptionsReal("-indenter_angle", "Cone or face angle (degrees; 0 standard)", "", angle, &angle, NULL));
   PetscOptionsEnd();
   PetscCheck(has_file, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-op_file is required (a CSV with depth_nm and load_uN)");
-  PetscCheck(p.E_indenter >= 0, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-op_indenter_modulus must be >= 0 (GPa; 0 rigid), got %g", (double)p.E_indenter);
-  PetscCheck(p.nu_indenter > -1 && p.nu_indenter < 0.5, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-op_indenter_poisson must lie in (-1, 0.5), got %g", (double)p.nu_indenter);
-  PetscCheck(p.nu_sample > -1 && p.nu_sample < 0.5, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-op_poisson must lie in (-1, 0.5), got %g", (double)p.nu_sample);
   PetscCheck(has_type, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-indenter_type is required for the area function");
   ind.angle = angle * PETSC_PI / 180;
   PetscCheck(!IndIndenterSetUp(&ind), PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-indenter_type %s: bad -indenter_radius or -indenter_angle", IndIndenterTypes[ind.type]);

@@ -1,9 +1,7 @@
-#include <errno.h>
 #include <string.h>
-#include <sys/stat.h>
-#include <unistd.h>
 #include <petscsf.h>
 #include "ind_output.h"
+#include "ind_files.h"
 #include "ind_elasticity.h"
 #include "ind_version.h"
 
@@ -110,30 +108,6 @@ static PetscErrorCode WriteProvenance(IndOutput o)
 }
 
 /* mkdir -p on rank 0, checked before any solve so that a bad -output_dir costs nothing. */
-static PetscErrorCode MakeOutputDir(MPI_Comm comm, const char dir[])
-{
-  PetscMPIInt rank;
-  int         err = 0;
-  char        path[PETSC_MAX_PATH_LEN];
-
-  PetscFunctionBeginUser;
-  PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  if (rank == 0) {
-    PetscCall(PetscStrncpy(path, dir, sizeof(path)));
-    for (char *p = path + 1; *p && !err; ++p)
-      if (*p == '/') {
-        *p = 0;
-        if (mkdir(path, 0777) && errno != EEXIST) err = errno;
-        *p = '/';
-      }
-    if (!err && mkdir(path, 0777) && errno != EEXIST) err = errno;
-    if (!err && access(path, W_OK)) err = errno;
-  }
-  PetscCallMPI(MPI_Bcast(&err, 1, MPI_INT, 0, comm));
-  PetscCheck(!err, comm, PETSC_ERR_FILE_OPEN, "Cannot create or write to the output directory '%s' (-output_dir): %s", dir, strerror(err));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 static PetscErrorCode OpenFile(IndOutput o)
 {
   MPI_Comm     comm = PetscObjectComm((PetscObject)o->vdm);
@@ -198,7 +172,10 @@ static PetscErrorCode WriteXdmf(IndOutput o)
     {"plastic_strain", "Scalar", "Cell", o->ncell, 1},
     {"back_stress", "Scalar", "Cell", o->ncell, 1},
     {"yielding", "Scalar", "Cell", o->ncell, 1},
+    {"contact_pressure", "Scalar", "Node", o->nvert, 1},
+    {"contact_status", "Scalar", "Node", o->nvert, 1},
   };
+  const size_t nfields = sizeof(fields) / sizeof(fields[0]) - (o->contact ? 0 : 2);
 
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(PetscObjectComm((PetscObject)o->vdm), &rank));
@@ -215,7 +192,7 @@ static PetscErrorCode WriteXdmf(IndOutput o)
     fprintf(fp, "<Grid Name=\"step %" PetscInt_FMT "\" GridType=\"Uniform\">\n<Time Value=\"%.10g\"/>\n", t, (double)o->times[t]);
     fprintf(fp, "<Topology TopologyType=\"%s\" NumberOfElements=\"%" PetscInt_FMT "\"><DataItem Reference=\"XML\">/Xdmf/Domain/DataItem[@Name=\"cells\"]</DataItem></Topology>\n", cell, o->ncell);
     fprintf(fp, "<Geometry GeometryType=\"XYZ\"><DataItem Reference=\"XML\">/Xdmf/Domain/DataItem[@Name=\"vertices\"]</DataItem></Geometry>\n");
-    for (size_t f = 0; f < sizeof(fields) / sizeof(fields[0]); ++f) {
+    for (size_t f = 0; f < nfields; ++f) {
       fprintf(fp, "<Attribute Name=\"%s\" AttributeType=\"%s\" Center=\"%s\">\n", fields[f].name, fields[f].type, fields[f].center);
       fprintf(fp, "<DataItem ItemType=\"HyperSlab\" Dimensions=\"%" PetscInt_FMT " %" PetscInt_FMT "\" Type=\"HyperSlab\">\n", fields[f].n, fields[f].bs);
       fprintf(fp, "<DataItem Dimensions=\"3 3\" Format=\"XML\">%" PetscInt_FMT " 0 0 1 1 1 1 %" PetscInt_FMT " %" PetscInt_FMT "</DataItem>\n", t, fields[f].n, fields[f].bs);
@@ -248,7 +225,7 @@ PetscErrorCode IndOutputCreate(IndMesh mesh, IndDisc disc, IndOutput *out)
   PetscOptionsEnd();
   PetscCheck(o->dir[0], comm, PETSC_ERR_ARG_WRONG, "-output_dir must not be empty");
   PetscCall(PetscSNPrintf(o->h5name, sizeof(o->h5name), "%s/indent.h5", o->dir));
-  if (o->enabled || o->curve) PetscCall(MakeOutputDir(comm, o->dir));
+  if (o->enabled || o->curve) PetscCall(IndMakeDirectory(comm, o->dir, "-output_dir"));
   PetscCall(CreateStratumDM(mesh->dm, PETSC_FALSE, 3, &o->vdm));
   PetscCall(CreateStratumDM(mesh->dm, PETSC_TRUE, 6, &o->c6dm));
   PetscCall(CreateStratumDM(mesh->dm, PETSC_TRUE, 1, &o->c1dm));
@@ -270,6 +247,56 @@ PetscErrorCode IndOutputCreate(IndMesh mesh, IndDisc disc, IndOutput *out)
   PetscCall(PetscObjectSetName((PetscObject)o->yielding, "yielding"));
   PetscCall(PetscMalloc1(IND_MAX_OUTPUT_STEPS, &o->times));
   *out = o;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode IndOutputSetContact(IndOutput o, IndContact contact)
+{
+  DM v1dm;
+
+  PetscFunctionBeginUser;
+  o->contact = contact;
+  if (!contact) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(DMCreateGlobalVector(o->disc->dm, &o->Gc));
+  PetscCall(DMCreateLocalVector(o->disc->dm, &o->Cloc));
+  PetscCall(DMCreateGlobalVector(o->vdm, &o->c3));
+  PetscCall(CreateStratumDM(o->mesh->dm, PETSC_FALSE, 1, &v1dm));
+  PetscCall(DMCreateGlobalVector(v1dm, &o->pressure));
+  PetscCall(DMCreateGlobalVector(v1dm, &o->status));
+  PetscCall(DMDestroy(&v1dm));
+  PetscCall(PetscObjectSetName((PetscObject)o->pressure, "contact_pressure"));
+  PetscCall(PetscObjectSetName((PetscObject)o->status, "contact_status"));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The contact's node values (pressure, status) moved onto the vertices, one vector each. */
+static PetscErrorCode GatherContactFields(IndOutput o, Vec U)
+{
+  PetscSection       us;
+  const PetscScalar *cl, *c3;
+  PetscScalar       *p, *st;
+  PetscInt           n;
+
+  PetscFunctionBeginUser;
+  PetscCall(IndContactNodalFields(o->contact, U, o->Gc));
+  PetscCall(DMGlobalToLocal(o->disc->dm, o->Gc, INSERT_VALUES, o->Cloc));
+  PetscCall(DMGetLocalSection(o->disc->dm, &us));
+  PetscCall(VecGetArrayRead(o->Cloc, &cl));
+  PetscCall(GatherVertexValues(o, us, cl, o->c3));
+  PetscCall(VecRestoreArrayRead(o->Cloc, &cl));
+  /* Both layouts own the same vertices in the same order: entry i of a 1-dof vector is entries
+     3i .. 3i + 2 of the 3-dof one. */
+  PetscCall(VecGetLocalSize(o->pressure, &n));
+  PetscCall(VecGetArrayRead(o->c3, &c3));
+  PetscCall(VecGetArray(o->pressure, &p));
+  PetscCall(VecGetArray(o->status, &st));
+  for (PetscInt i = 0; i < n; ++i) {
+    p[i]  = c3[3 * i];
+    st[i] = c3[3 * i + 1];
+  }
+  PetscCall(VecRestoreArray(o->status, &st));
+  PetscCall(VecRestoreArray(o->pressure, &p));
+  PetscCall(VecRestoreArrayRead(o->c3, &c3));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -317,6 +344,11 @@ PetscErrorCode IndOutputWriteStep(IndOutput o, PetscReal time, Vec U, IndAssembl
   PetscCall(VecView(o->plastic, o->viewer));
   PetscCall(VecView(o->back, o->viewer));
   PetscCall(VecView(o->yielding, o->viewer));
+  if (o->contact) {
+    PetscCall(GatherContactFields(o, U));
+    PetscCall(VecView(o->pressure, o->viewer));
+    PetscCall(VecView(o->status, o->viewer));
+  }
   PetscCall(PetscViewerHDF5PopGroup(o->viewer));
   PetscCall(PetscViewerFlush(o->viewer));
   o->times[o->nsteps++] = time;
@@ -339,10 +371,10 @@ PetscErrorCode IndOutputCurvePoint(IndOutput o, const IndCurvePoint *p)
     PetscCall(PetscSNPrintf(path, sizeof(path), "%s/load_displacement.csv", o->dir));
     o->csv = fopen(path, "w");
     PetscCheck(o->csv, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "Cannot write '%s' (-output_dir)", path);
-    fprintf(o->csv, "step,t,depth_nm,load_uN,contact_nodes,stick,slip,newton,uzawa,linear,cutbacks,penetration_nm,contact_area_nm2,seconds\n");
+    fprintf(o->csv, "step,t,depth_nm,load_uN,contact_nodes,stick,slip,newton,uzawa,linear,cutbacks,penetration_nm,contact_area_nm2,pileup_nm,deepest_nm,seconds\n");
   }
-  fprintf(o->csv, "%" PetscInt_FMT ",%.10g,%.12g,%.12g,%" PetscInt_FMT ",%" PetscInt_FMT ",%" PetscInt_FMT ",%" PetscInt_FMT ",%" PetscInt_FMT ",%" PetscInt_FMT ",%" PetscInt_FMT ",%.6g,%.10g,%.4f\n", p->step, (double)p->t, (double)p->depth, (double)p->load, p->contact, p->stick, p->slip, p->newton, p->outer,
-          p->linear, p->cutbacks, (double)p->penetration, (double)p->area, (double)p->seconds);
+  fprintf(o->csv, "%" PetscInt_FMT ",%.10g,%.12g,%.12g,%" PetscInt_FMT ",%" PetscInt_FMT ",%" PetscInt_FMT ",%" PetscInt_FMT ",%" PetscInt_FMT ",%" PetscInt_FMT ",%" PetscInt_FMT ",%.6g,%.10g,%.8g,%.10g,%.4f\n", p->step, (double)p->t, (double)p->depth, (double)p->load, p->contact, p->stick, p->slip, p->newton, p->outer,
+          p->linear, p->cutbacks, (double)p->penetration, (double)p->area, (double)p->pileup, (double)p->deepest, (double)p->seconds);
   PetscCheck(fflush(o->csv) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Error writing %s/load_displacement.csv", o->dir);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -363,6 +395,11 @@ PetscErrorCode IndOutputDestroy(IndOutput *o)
   PetscCall(VecDestroy(&(*o)->plastic));
   PetscCall(VecDestroy(&(*o)->back));
   PetscCall(VecDestroy(&(*o)->yielding));
+  PetscCall(VecDestroy(&(*o)->Gc));
+  PetscCall(VecDestroy(&(*o)->Cloc));
+  PetscCall(VecDestroy(&(*o)->c3));
+  PetscCall(VecDestroy(&(*o)->pressure));
+  PetscCall(VecDestroy(&(*o)->status));
   PetscCall(DMDestroy(&(*o)->vdm));
   PetscCall(DMDestroy(&(*o)->c6dm));
   PetscCall(DMDestroy(&(*o)->c1dm));

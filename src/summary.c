@@ -1,0 +1,173 @@
+#include <stdio.h>
+#include "ind_summary.h"
+
+PetscErrorCode IndOPParamsSetFromOptions(MPI_Comm comm, IndOPParams *p)
+{
+  PetscFunctionBeginUser;
+  IndOPParamsDefault(p);
+  PetscOptionsBegin(comm, NULL, "Oliver-Pharr analysis", "OP");
+  PetscCall(PetscOptionsReal("-op_fraction", "Fit the unloading points with P >= (1 - fraction) P_max", "", p->fraction, &p->fraction, NULL));
+  PetscCall(PetscOptionsReal("-op_epsilon", "Contact-depth factor: h_c = h_max - epsilon P_max / S", "", p->epsilon, &p->epsilon, NULL));
+  PetscCall(PetscOptionsReal("-op_beta", "Shape factor: E_r = sqrt(pi) / (2 beta) S / sqrt(A)", "", p->beta, &p->beta, NULL));
+  PetscCall(PetscOptionsReal("-op_indenter_modulus", "Indenter's Young's modulus (GPa; 0 rigid, diamond 1141)", "", p->E_indenter, &p->E_indenter, NULL));
+  PetscCall(PetscOptionsReal("-op_indenter_poisson", "Indenter's Poisson's ratio", "", p->nu_indenter, &p->nu_indenter, NULL));
+  PetscCall(PetscOptionsReal("-op_poisson", "Sample's Poisson's ratio, for its modulus from E_r", "", p->nu_sample, &p->nu_sample, NULL));
+  PetscOptionsEnd();
+  PetscCheck(p->fraction > 0 && p->fraction <= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-op_fraction must lie in (0, 1], got %g", (double)p->fraction);
+  PetscCheck(p->epsilon > 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-op_epsilon must be > 0, got %g", (double)p->epsilon);
+  PetscCheck(p->beta > 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-op_beta must be > 0, got %g", (double)p->beta);
+  PetscCheck(p->E_indenter >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-op_indenter_modulus must be >= 0 (GPa; 0 rigid), got %g", (double)p->E_indenter);
+  PetscCheck(p->nu_indenter > -1 && p->nu_indenter < 0.5, comm, PETSC_ERR_ARG_OUTOFRANGE, "-op_indenter_poisson must lie in (-1, 0.5), got %g", (double)p->nu_indenter);
+  PetscCheck(p->nu_sample > -1 && p->nu_sample < 0.5, comm, PETSC_ERR_ARG_OUTOFRANGE, "-op_poisson must lie in (-1, 0.5), got %g", (double)p->nu_sample);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode IndSummaryCreate(MPI_Comm comm, IndSummary *out)
+{
+  IndSummary s;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscCalloc1(1, &s));
+  s->comm = comm;
+  s->cap  = 256;
+  PetscCall(PetscMalloc1(s->cap, &s->pts));
+  PetscCall(IndOPParamsSetFromOptions(comm, &s->op));
+  PetscCall(PetscTime(&s->start));
+  *out = s;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode IndSummaryDestroy(IndSummary *s)
+{
+  PetscFunctionBeginUser;
+  if (!*s) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(PetscFree((*s)->pts));
+  PetscCall(PetscFree(*s));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode IndSummaryAddPoint(IndSummary s, const IndCurvePoint *p)
+{
+  PetscFunctionBeginUser;
+  if (s->n == s->cap) {
+    IndCurvePoint *more;
+    PetscCall(PetscMalloc1(2 * s->cap, &more));
+    PetscCall(PetscArraycpy(more, s->pts, s->n));
+    PetscCall(PetscFree(s->pts));
+    s->pts = more;
+    s->cap *= 2;
+  }
+  s->pts[s->n++] = *p;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscReal Area(PetscReal hc, void *ctx)
+{
+  return IndIndenterArea((const IndIndenter *)ctx, hc);
+}
+
+/* The summary's numbers, in the order of its text and JSON. */
+typedef struct {
+  const char *key, *label, *unit;
+  PetscReal   value;
+  PetscBool   integer;
+} Entry;
+
+static void Put(Entry *e, PetscInt *n, const char *key, const char *label, const char *unit, PetscReal v, PetscBool integer)
+{
+  e[*n].key = key, e[*n].label = label, e[*n].unit = unit, e[*n].value = v, e[*n].integer = integer;
+  (*n)++;
+}
+
+PetscErrorCode IndSummaryFinish(IndSummary s, const IndIndenter *ind, const char dir[], PetscBool write, PetscBool print)
+{
+  PetscReal     *h, *P, Hs = 0, Ers = 0, Es = 0;
+  IndOPResult    r;
+  const IndCurvePoint *pmax, *last;
+  PetscInt       imax = 0, ne = 0, newton = 0, outer = 0, linear = 0, code;
+  PetscLogDouble now;
+  Entry          e[40];
+  char           why[256] = "";
+  PetscMPIInt    rank;
+
+  PetscFunctionBeginUser;
+  if (!s->n) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(PetscTime(&now));
+  PetscCall(PetscMalloc2(s->n, &h, s->n, &P));
+  for (PetscInt i = 0; i < s->n; ++i) {
+    h[i] = s->pts[i].depth;
+    P[i] = s->pts[i].load;
+    if (P[i] > P[imax]) imax = i;
+    newton += s->pts[i].newton;
+    outer += s->pts[i].outer;
+    linear += s->pts[i].linear;
+  }
+  pmax = &s->pts[imax];
+  last = &s->pts[s->n - 1];
+  code = IndOliverPharr(h, P, s->n, &s->op, Area, (void *)ind, &r);
+  if (code == 1) PetscCall(PetscSNPrintf(why, sizeof(why), "fewer than 3 unloading points with P >= %g P_max: raise -load_unload_steps", (double)(1 - s->op.fraction)));
+  else if (code) PetscCall(PetscSNPrintf(why, sizeof(why), "the unloading branch is not a power law"));
+  else IndOPFromArea(&s->op, &r, pmax->area, &Hs, &Ers, &Es);
+  PetscCall(PetscFree2(h, P));
+
+  Put(e, &ne, "P_max_uN", "largest load P_max", "uN", pmax->load, PETSC_FALSE);
+  Put(e, &ne, "h_max_nm", "depth at P_max, h_max", "nm", pmax->depth, PETSC_FALSE);
+  Put(e, &ne, "final_depth_nm", "indenter depth at the end", "nm", last->depth, PETSC_FALSE);
+  Put(e, &ne, "final_load_uN", "load at the end", "uN", last->load, PETSC_FALSE);
+  Put(e, &ne, "residual_depth_nm", "residual depth (deepest point of the imprint at the end)", "nm", last->deepest, PETSC_FALSE);
+  Put(e, &ne, "pileup_final_nm", "largest pile-up at the end", "nm", last->pileup, PETSC_FALSE);
+  Put(e, &ne, "pileup_at_P_max_nm", "largest pile-up at P_max", "nm", pmax->pileup, PETSC_FALSE);
+  Put(e, &ne, "true_area_nm2", "true (projected) contact area at P_max", "nm^2", pmax->area, PETSC_FALSE);
+  Put(e, &ne, "mean_pressure_GPa", "P_max / true area (GPa)", "GPa", pmax->area > 0 ? 1e3 * pmax->load / pmax->area : 0, PETSC_FALSE);
+  if (!code) {
+    Put(e, &ne, "op_points", "Oliver-Pharr: unloading points fitted", "", (PetscReal)r.npoints, PETSC_TRUE);
+    Put(e, &ne, "op_alpha", "fit P = alpha (h - h_f)^m: alpha", "uN/nm^m", r.alpha, PETSC_FALSE);
+    Put(e, &ne, "h_f_nm", "fit: h_f (residual depth of the fit)", "nm", r.h_f, PETSC_FALSE);
+    Put(e, &ne, "op_m", "fit: m", "", r.m, PETSC_FALSE);
+    Put(e, &ne, "op_rms_uN", "fit: rms misfit", "uN", r.rms, PETSC_FALSE);
+    Put(e, &ne, "S_uN_per_nm", "contact stiffness S", "uN/nm", r.S, PETSC_FALSE);
+    Put(e, &ne, "h_c_nm", "contact depth h_c", "nm", r.h_c, PETSC_FALSE);
+    Put(e, &ne, "A_nm2", "projected area A(h_c)", "nm^2", r.A, PETSC_FALSE);
+    Put(e, &ne, "H_GPa", "hardness H", "GPa", r.H, PETSC_FALSE);
+    Put(e, &ne, "E_r_GPa", "reduced modulus E_r", "GPa", r.E_r, PETSC_FALSE);
+    Put(e, &ne, "E_GPa", "sample modulus E (from E_r, -op_poisson)", "GPa", r.E, PETSC_FALSE);
+    Put(e, &ne, "area_ratio", "true area / A(h_c) (> 1 pile-up, < 1 sink-in)", "", r.A > 0 ? pmax->area / r.A : 0, PETSC_FALSE);
+    Put(e, &ne, "H_true_GPa", "hardness from the true area", "GPa", Hs, PETSC_FALSE);
+    Put(e, &ne, "E_r_true_GPa", "reduced modulus from the true area", "GPa", Ers, PETSC_FALSE);
+  }
+  Put(e, &ne, "steps", "accepted steps", "", (PetscReal)s->n, PETSC_TRUE);
+  Put(e, &ne, "cutbacks", "cut-back attempts", "", (PetscReal)last->cutbacks, PETSC_TRUE);
+  Put(e, &ne, "newton", "Newton iterations", "", (PetscReal)newton, PETSC_TRUE);
+  Put(e, &ne, "uzawa", "outer (Uzawa) iterations", "", (PetscReal)outer, PETSC_TRUE);
+  Put(e, &ne, "linear", "linear iterations", "", (PetscReal)linear, PETSC_TRUE);
+  Put(e, &ne, "wall_time_s", "wall time of the run", "s", (PetscReal)(now - s->start), PETSC_FALSE);
+
+  if (print) {
+    PetscCall(PetscPrintf(s->comm, "summary (%s indenter%s):\n", IndIndenterTypes[ind->type], write ? "; also in summary.txt and summary.json" : ""));
+    for (PetscInt k = 0; k < ne; ++k) {
+      if (e[k].integer) PetscCall(PetscPrintf(s->comm, "  %-58s %12.0f\n", e[k].label, (double)e[k].value));
+      else PetscCall(PetscPrintf(s->comm, "  %-58s %12.6g %s\n", e[k].label, (double)e[k].value, e[k].unit));
+    }
+    if (code) PetscCall(PetscPrintf(s->comm, "  no Oliver-Pharr analysis: %s\n", why));
+  }
+
+  PetscCallMPI(MPI_Comm_rank(s->comm, &rank));
+  if (write && !rank) {
+    char  path[PETSC_MAX_PATH_LEN];
+    FILE *fp;
+    PetscCall(PetscSNPrintf(path, sizeof(path), "%s/summary.txt", dir));
+    fp = fopen(path, "w");
+    PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "Cannot write '%s' (-output_dir)", path);
+    for (PetscInt k = 0; k < ne; ++k) fprintf(fp, "%-58s %.10g %s\n", e[k].label, (double)e[k].value, e[k].unit);
+    if (code) fprintf(fp, "no Oliver-Pharr analysis: %s\n", why);
+    PetscCheck(fclose(fp) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Error writing '%s'", path);
+    PetscCall(PetscSNPrintf(path, sizeof(path), "%s/summary.json", dir));
+    fp = fopen(path, "w");
+    PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "Cannot write '%s' (-output_dir)", path);
+    fprintf(fp, "{\n  \"indenter\": \"%s\",\n  \"op_fraction\": %.10g,\n  \"op_epsilon\": %.10g,\n  \"op_beta\": %.10g", IndIndenterTypes[ind->type], (double)s->op.fraction, (double)s->op.epsilon, (double)s->op.beta);
+    for (PetscInt k = 0; k < ne; ++k) fprintf(fp, ",\n  \"%s\": %.12g", e[k].key, (double)e[k].value);
+    fprintf(fp, "\n}\n");
+    PetscCheck(fclose(fp) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Error writing '%s'", path);
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
