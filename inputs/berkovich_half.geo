@@ -25,6 +25,7 @@ Physical Volume("substrate") = Volume In BoundingBox{-width - e, -e, -depth - e,
 Physical Surface("top") = Surface In BoundingBox{-width - e, -e, -e, width + e, width + e, e};
 Physical Surface("bottom") = Surface In BoundingBox{-width - e, -e, -depth - e, width + e, width + e, -depth + e};
 Physical Surface("symmetry") = Surface In BoundingBox{-width - e, -e, -depth - e, width + e, e, e};
-Physical Surface("sides") = Surface In BoundingBox{-width - e, width - e, -depth - e, width + e, width + e, e}
-                          , Surface In BoundingBox{-width - e, -e, -depth - e, -width + e, width + e, e}
-                          , Surface In BoundingBox{width - e, -e, -depth - e, width + e, width + e, e};
+back() = Surface In BoundingBox{-width - e, width - e, -depth - e, width + e, width + e, e};
+left() = Surface In BoundingBox{-width - e, -e, -depth - e, -width + e, width + e, e};
+right() = Surface In BoundingBox{width - e, -e, -depth - e, width + e, width + e, e};
+Physical Surface("sides") = {back(), left(), right()};

@@ -1,0 +1,33 @@
+// Full model of a film on a substrate for an indentation along the z axis (the top surface is z = 0):
+// the same block as berkovich_half.geo mirrored to y < 0, for runs without the symmetry plane
+// (a rotated or off-axis indenter, friction patterns that break the mirror symmetry). Tetrahedra,
+// refined near the tip. Parameters (nm), as in the half model:
+//   -setnumber film 300 -setnumber width 1500 -setnumber depth 1500
+//   -setnumber h_tip 10 -setnumber h_far 250 -setnumber r_fine 150
+SetFactory("OpenCASCADE");
+DefineConstant[ film = 300, width = 1500, depth = 1500, h_tip = 10, h_far = 250, r_fine = 150 ];
+Box(1) = {-width, -width, -film, 2 * width, 2 * width, film};            // film
+Box(2) = {-width, -width, -depth, 2 * width, 2 * width, depth - film};   // substrate
+BooleanFragments{ Volume{1}; Delete; }{ Volume{2}; Delete; }
+Point(100) = {0, 0, 0};
+Field[1] = Distance;
+Field[1].PointsList = {100};
+Field[2] = Threshold;
+Field[2].InField = 1;
+Field[2].SizeMin = h_tip;
+Field[2].SizeMax = h_far;
+Field[2].DistMin = r_fine;
+Field[2].DistMax = 8 * r_fine;
+Background Field = 2;
+Mesh.CharacteristicLengthExtendFromBoundary = 0;
+Mesh.CharacteristicLengthFromPoints = 0;
+e = 1e-3;
+Physical Volume("film") = Volume In BoundingBox{-width - e, -width - e, -film - e, width + e, width + e, e};
+Physical Volume("substrate") = Volume In BoundingBox{-width - e, -width - e, -depth - e, width + e, width + e, -film + e};
+Physical Surface("top") = Surface In BoundingBox{-width - e, -width - e, -e, width + e, width + e, e};
+Physical Surface("bottom") = Surface In BoundingBox{-width - e, -width - e, -depth - e, width + e, width + e, -depth + e};
+front() = Surface In BoundingBox{-width - e, -width - e, -depth - e, width + e, -width + e, e};
+back() = Surface In BoundingBox{-width - e, width - e, -depth - e, width + e, width + e, e};
+left() = Surface In BoundingBox{-width - e, -width - e, -depth - e, -width + e, width + e, e};
+right() = Surface In BoundingBox{width - e, -width - e, -depth - e, width + e, width + e, e};
+Physical Surface("sides") = {front(), back(), left(), right()};
