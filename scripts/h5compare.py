@@ -15,6 +15,10 @@ import numpy as np
 
 
 
+# Fields on the mesh vertices; all others are on the cells.
+VERTEX_FIELDS = ("displacement", "contact_pressure", "contact_status")
+
+
 def bad_input(message):
     print(f"h5compare: {message}", file=sys.stderr)
     sys.exit(2)
@@ -85,7 +89,7 @@ def main():
             continue
         steps = range(fa.shape[0]) if args.step is None else [args.step]
         for s in steps:
-            pa, pb = (va, vb) if fa.shape[1] == xa.shape[0] and name == "displacement" else (oa, ob)
+            pa, pb = (va, vb) if name in VERTEX_FIELDS else (oa, ob)
             da, db = fa[s][pa], fb[s][pb]
             err = np.abs(da - db)
             bad = err > atol + rtol * np.abs(db)

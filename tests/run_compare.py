@@ -2,10 +2,12 @@
 """Run indent on several rank counts and compare the HDF5 outputs with scripts/h5compare.py.
 
   run_compare.py --mpiexec M --indent BIN --workdir D --np 1,2,3 [--reference REF.h5]
-                 [--field NAME:ATOL:RTOL ...] -- <indent options>
+                 [--field NAME:ATOL:RTOL ...] [--curve REF.csv --curve-rtol R] -- <indent options>
 
 Without --reference the first rank count is the reference for the others (parallel consistency);
-with it, every run is compared against the committed file (regression). Exit 0 when all agree.
+with it, every run is compared against the committed file (regression). With --curve, every run's
+load_displacement.csv is also compared with REF.csv (load at each depth, tests/compare_curves.py).
+Exit 0 when all agree.
 """
 import os
 import subprocess
@@ -16,6 +18,7 @@ sys.path.insert(0, HERE)
 import indentrun  # noqa: E402
 
 H5COMPARE = os.path.join(HERE, "..", "scripts", "h5compare.py")
+COMPARE_CURVES = os.path.join(HERE, "compare_curves.py")
 
 
 def main():
@@ -23,6 +26,9 @@ def main():
     ap.add_argument("--np", default="1,2,3")
     ap.add_argument("--reference")
     ap.add_argument("--field", action="append", default=[])
+    ap.add_argument("--curve")
+    ap.add_argument("--curve-rtol", type=float, default=1e-6)
+    ap.add_argument("--curve-atol", type=float, default=1e-6)
     args = ap.parse_args(argv)
 
     outputs = []
@@ -38,6 +44,12 @@ def main():
         print(f"compare {np_} ranks against {'reference' if args.reference else f'{outputs[0][0]} rank(s)'}:", flush=True)
         cmd = [sys.executable, H5COMPARE, path, ref] + [a for f in args.field for a in ("--field", f)]
         failed += subprocess.run(cmd).returncode != 0
+    if args.curve:
+        for np_, path in outputs:
+            print(f"compare the curve of {np_} ranks against {args.curve}:", flush=True)
+            csv = os.path.join(os.path.dirname(path), "load_displacement.csv")
+            cmd = [sys.executable, COMPARE_CURVES, csv, args.curve, "--rtol", str(args.curve_rtol), "--atol", str(args.curve_atol)]
+            failed += subprocess.run(cmd).returncode != 0
     print("all runs agree" if not failed else f"FAIL: {failed} comparison(s) differ")
     return 1 if failed else 0
 

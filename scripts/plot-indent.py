@@ -1,0 +1,360 @@
+#!/usr/bin/env python3
+"""Pictures of an indentation run: the load-displacement curve, the residual imprint (table and
+contour map) and a vertical slice through the indenter axis with the von Mises stress at the largest
+load and the plastic strain at the last step (after unloading, for a complete run).
+
+  /usr/bin/python3 scripts/plot-indent.py RUN_DIR [--out DIR]
+
+Reads RUN_DIR/load_displacement.csv and RUN_DIR/indent.h5 and writes into DIR (default RUN_DIR):
+load_displacement.png, imprint.csv, imprint.png, stress_slice.png. Half (y >= 0) and quarter
+(x, y >= 0) models are mirrored for the pictures. Exit status 2 on bad input.
+"""
+import argparse
+import csv
+import os
+import sys
+
+import h5py
+import matplotlib
+import numpy as np
+
+matplotlib.use("Agg")  # files only, never a window: the script also runs on machines without a display
+import matplotlib.pyplot as plt  # noqa: E402  (must come after the backend is chosen)
+from matplotlib import colors, ticker, tri as mtri  # noqa: E402
+
+CSV_NAME = "load_displacement.csv"
+H5_NAME = "indent.h5"
+# Coordinates on a plane of the mesh (top surface, symmetry plane) are exact up to round-off, so a
+# tolerance relative to the mesh size separates them safely from the next layer of vertices.
+REL_TOL = 1e-9
+# Local faces of the supported cells as cyclic vertex lists (VTK order for the hexahedron), so that
+# a quadrilateral splits into the triangles (0, 1, 2) and (0, 2, 3).
+CELL_FACES = {
+    4: [(1, 2, 3), (0, 2, 3), (0, 1, 3), (0, 1, 2)],
+    8: [(0, 1, 2, 3), (4, 5, 6, 7), (0, 1, 5, 4), (1, 2, 6, 5), (2, 3, 7, 6), (3, 0, 4, 7)],
+}
+
+
+class InputError(Exception):
+    """A missing or malformed input file: reported in one line, exit status 2."""
+
+
+# ----------------------------------------------------------------------------------------- input
+def read_curve(path):
+    """The load-displacement CSV as a dict of float arrays, one entry per column."""
+    if not os.path.isfile(path):
+        raise InputError(f"{path}: no such file")
+    with open(path, newline="") as f:
+        rows = list(csv.DictReader(f))
+    need = ("depth_nm", "load_uN")
+    if not rows or any(c not in rows[0] for c in need):
+        raise InputError(f"{path}: no data rows or missing one of the columns {', '.join(need)}")
+    try:
+        return {c: np.array([float(r[c]) for r in rows]) for c in rows[0]}
+    except (TypeError, ValueError) as e:
+        raise InputError(f"{path}: unreadable number ({e})") from None
+
+
+class Run:
+    """The mesh of indent.h5, with its fields read one step at a time (a step of ~100k cells is
+    a few MB, the whole history can be GBs)."""
+
+    def __init__(self, path):
+        if not os.path.isfile(path):
+            raise InputError(f"{path}: no such file")
+        try:
+            self.h5 = h5py.File(path, "r")
+        except OSError as e:
+            raise InputError(f"{path}: cannot open as HDF5 ({e})") from None
+        self.path = path
+        self.x = self.dataset("geometry/vertices")[:]
+        self.cells = self.dataset("topology/cells")[:].astype(np.int64)
+        if self.x.ndim != 2 or self.x.shape[1] != 3 or self.cells.ndim != 2 or self.cells.shape[1] not in CELL_FACES:
+            raise InputError(f"{path}: expected vertices (N, 3) and cells (C, 4 or 8), got {self.x.shape} and {self.cells.shape}")
+        lo, hi = self.x.min(axis=0), self.x.max(axis=0)
+        self.tol = REL_TOL * float(np.max(hi - lo))
+        self.lo, self.hi = lo, hi
+        self.z_top = hi[2]
+        self.nsteps = self.dataset("fields/displacement").shape[0]
+        # A symmetry plane x = 0 or y = 0 is a boundary of the model with the body on its positive side.
+        self.mirror_axes = [a for a in (0, 1) if abs(lo[a]) <= self.tol and hi[a] > self.tol]
+
+    def dataset(self, name):
+        if name not in self.h5:
+            raise InputError(f"{self.path}: dataset /{name} missing")
+        return self.h5[name]
+
+    def field(self, name, step):
+        """One step of a field, flattened to (N,) when it has a single component."""
+        data = self.dataset(f"fields/{name}")[step]
+        return data[:, 0] if data.shape[1] == 1 else data
+
+    def optional_field(self, name, step):
+        """A field that older files lack (contact_status, contact_pressure): None when absent."""
+        return self.field(name, step) if f"fields/{name}" in self.h5 else None
+
+
+# -------------------------------------------------------------------------------------- geometry
+def plane_faces(cells, on_plane):
+    """Triangles of the cell faces whose vertices all lie on a plane (on_plane: vertex mask), with
+    the cell owning each triangle."""
+    flags = on_plane[cells]
+    tris, owners = [], []
+    for face in CELL_FACES[cells.shape[1]]:  # a loop over the 4 or 6 local faces, not over cells
+        owner = np.flatnonzero(flags[:, face].all(axis=1))
+        v = cells[owner][:, face]
+        for k in range(1, len(face) - 1):  # fan of the face: 1 triangle, or 2 for a quadrilateral
+            tris.append(v[:, [0, k, k + 1]])
+            owners.append(owner)
+    return np.concatenate(tris), np.concatenate(owners)
+
+
+def mirror(points, tris, axes, tol):
+    """Reflects a 2D triangulation across the lines points[:, a] = 0 for a in axes. Returns the new
+    points and triangles, and for each new point / triangle the index of its original, so values
+    come along by indexing. Points on a mirror line are shared, so the picture has no seam."""
+    pts, tr = points, tris
+    psrc, tsrc = np.arange(len(points)), np.arange(len(tris))
+    for a in axes:
+        on_line = np.abs(pts[:, a]) <= tol
+        image = np.where(on_line, np.arange(len(pts)), len(pts) + np.cumsum(~on_line) - 1)
+        flipped = pts[~on_line].copy()
+        flipped[:, a] *= -1
+        pts = np.vstack([pts, flipped])
+        tr = np.vstack([tr, image[tr][:, ::-1]])  # reversed to keep the orientation
+        psrc = np.concatenate([psrc, psrc[~on_line]])
+        tsrc = np.concatenate([tsrc, tsrc])
+    return pts, tr, psrc, tsrc
+
+
+def triangle_area(p, tris):
+    a, b, c = p[tris[:, 0]], p[tris[:, 1]], p[tris[:, 2]]
+    return 0.5 * np.abs((b[:, 0] - a[:, 0]) * (c[:, 1] - a[:, 1]) - (b[:, 1] - a[:, 1]) * (c[:, 0] - a[:, 0]))
+
+
+# ------------------------------------------------------------------------------------------ curve
+def branches(depth):
+    """Index ranges of loading, hold and unloading: up to the first maximum depth, at it, after it."""
+    top = np.flatnonzero(depth >= depth.max())
+    return slice(0, top[0] + 1), slice(top[0], top[-1] + 1), slice(top[-1], len(depth))
+
+
+def plot_load_displacement(curve, path):
+    h, p = curve["depth_nm"], curve["load_uN"]
+    load, hold, unload = branches(h)
+    fig, ax = plt.subplots(figsize=(6, 4.5))
+    # The curve starts at the origin, which is not a step of the CSV.
+    ax.plot(np.r_[0, h[load]], np.r_[0, p[load]], "o-", color="tab:blue", ms=4, label="loading")
+    if hold.stop - hold.start > 1:
+        ax.plot(h[hold], p[hold], "s-", color="tab:green", ms=4, label="hold")
+    if unload.stop - unload.start > 1:
+        ax.plot(h[unload], p[unload], "v-", color="tab:red", ms=4, label="unloading")
+    ax.set_xlabel("depth h (nm)")
+    ax.set_ylabel("load P (uN)")
+    ax.set_title(f"P_max = {p.max():.4g} uN, h_max = {h.max():.4g} nm")
+    ax.set_xlim(left=0)
+    ax.set_ylim(bottom=0)
+    ax.grid(alpha=0.3)
+    ax.legend()
+    save(fig, path)
+
+
+# ---------------------------------------------------------------------------------------- imprint
+def top_surface(run):
+    """Top-surface vertex numbers (sorted by x then y) and its triangles in those local numbers."""
+    on_top = np.abs(run.x[:, 2] - run.z_top) <= run.tol
+    tris, _ = plane_faces(run.cells, on_top)
+    verts = np.flatnonzero(on_top)
+    verts = verts[np.lexsort((run.x[verts, 1], run.x[verts, 0]))]
+    local = np.full(len(run.x), -1)
+    local[verts] = np.arange(len(verts))
+    return verts, local[tris]
+
+
+def write_imprint(path, xy, height):
+    table = np.column_stack([xy, height])
+    np.savetxt(path, table, fmt="%.10g", delimiter=",", header="x_nm,y_nm,height_nm", comments="")
+    print(f"wrote {path}")
+
+
+def imprint(run, curve, out):
+    """imprint.csv and imprint.png: the top surface at the last step, relative to its original level."""
+    verts, tris = top_surface(run)
+    xy = run.x[verts, :2]
+    height = run.x[verts, 2] + run.field("displacement", run.nsteps - 1)[verts, 2] - run.z_top
+    write_imprint(os.path.join(out, "imprint.csv"), xy, height)
+    load = curve["load_uN"]
+    contact = run.optional_field("contact_status", int(np.argmax(load)))
+    # Only a run unloaded until the indenter left shows a residual imprint; otherwise the picture
+    # is the surface under the last load, and the title must not claim otherwise.
+    what = "residual imprint" if load[-1] <= 1e-9 * load.max() else f"surface under P = {load[-1]:.4g} uN"
+    plot_imprint(run, xy, tris, height, None if contact is None else contact[verts], what, os.path.join(out, "imprint.png"))
+
+
+def zoom_square(points, inside, bounds):
+    """Square of side 3x the extent of the points flagged inside, centred on them and clipped to
+    bounds ((xmin, xmax), (ymin, ymax)); the whole bounds when nothing is flagged."""
+    if not inside.any():
+        return bounds
+    lo, hi = points[inside].min(axis=0), points[inside].max(axis=0)
+    centre, half = 0.5 * (lo + hi), 1.5 * float(np.max(hi - lo))
+    return tuple((max(centre[a] - half, bounds[a][0]), min(centre[a] + half, bounds[a][1])) for a in (0, 1))
+
+
+def height_levels(vmin, vmax):
+    """Contour levels and a norm centred on 0: the pile-up is typically ten times shallower than
+    the print, so each side gets its own scale, otherwise it would be a single pale band."""
+    vmin = min(vmin, -1e-9)
+    vmax = max(vmax, 0.01 * abs(vmin))  # no pile-up at all: still a valid two-sided scale
+    levels = np.r_[np.linspace(vmin, 0, 11), np.linspace(0, vmax, 9)[1:]]
+    return levels, colors.TwoSlopeNorm(vcenter=0, vmin=vmin, vmax=vmax)
+
+
+def plot_imprint(run, xy, tris, height, contact, what, path):
+    """Filled contours of the top-surface height; contact (vertex status at P_max, or None) adds
+    the edge of the contact zone, to compare the imprint with the area that carried the load."""
+    pts, tr, psrc, _ = mirror(xy, tris, run.mirror_axes, run.tol)
+    val = height[psrc]
+    bounds = tuple((pts[:, a].min(), pts[:, a].max()) for a in (0, 1))
+    hmin = val.min()
+    # The print is where the surface is down by 5% of the deepest point; 1% would reach far out
+    # under load, where the elastic sink-in decays only as 1/r.
+    (x0, x1), (y0, y1) = zoom_square(pts, val < 0.05 * hmin if hmin < 0 else np.zeros(len(val), bool), bounds)
+    window = (pts[:, 0] >= x0) & (pts[:, 0] <= x1) & (pts[:, 1] >= y0) & (pts[:, 1] <= y1)
+    pileup = max(val[window].max(), 0.0)
+    levels, norm = height_levels(hmin, pileup)
+    triang = mtri.Triangulation(pts[:, 0], pts[:, 1], tr)
+    fig, ax = plt.subplots(figsize=(6.5, 5.5))
+    cs = ax.tricontourf(triang, val, levels=levels, norm=norm, cmap="RdBu_r", extend="both")
+    if val.min() < 0 < val.max():
+        ax.tricontour(triang, val, levels=[0], colors="k", linewidths=0.6)
+    if contact is not None and (contact > 0).any() and not (contact > 0).all():
+        ax.tricontour(triang, (contact[psrc] > 0).astype(float), levels=[0.5], colors="tab:green", linestyles="--", linewidths=1)
+        ax.plot([], [], "--", color="tab:green", label="contact edge at P_max")
+        ax.legend(loc="upper right", fontsize=8)
+    ax.set_xlim(x0, x1)
+    ax.set_ylim(y0, y1)
+    ax.set_aspect("equal")
+    ax.set_xlabel("x (nm)")
+    ax.set_ylabel("y (nm)")
+    ax.set_title(f"{what}: min {hmin:.3g} nm, pile-up {pileup:.3g} nm\n(black line: original surface level)", fontsize=10)
+    fig.colorbar(cs, ax=ax, label="height (nm)", ticks=levels[::2])
+    save(fig, path)
+
+
+# ----------------------------------------------------------------------------------- stress slice
+def contact_radius(curve, step):
+    """Radius of the disc with the projected contact area of the CSV (already times the symmetry
+    factor): the same measure whether or not the file has contact fields, and for a Berkovich print
+    between the in- and circumradius of the triangle."""
+    area = curve["contact_area_nm2"][step] if "contact_area_nm2" in curve else 0.0
+    return float(np.sqrt(area / np.pi)) if area > 0 else 3.0 * float(curve["depth_nm"].max())
+
+
+def section_y0(run):
+    """The plane y = 0 as (points (x, z), triangles, cell of each triangle or point). Cell faces
+    lying on the plane when they cover it (half model, or a full mesh with an internal surface
+    there); otherwise the centroids of the cells cut by the plane, with triangles None."""
+    on_plane = np.abs(run.x[:, 1]) <= run.tol
+    if on_plane.any():
+        tris, owners = plane_faces(run.cells, on_plane)
+        xz = run.x[:, [0, 2]]
+        section = (run.hi[0] - run.lo[0]) * (run.hi[2] - run.lo[2])
+        # A few stray faces on the plane (along box edges of a full mesh) are not a slice.
+        if len(tris) and triangle_area(xz, tris).sum() >= 0.5 * section:
+            if 0 in run.mirror_axes:  # a quarter model is also cut by x = 0
+                xz, tris, _, tsrc = mirror(xz, tris, [0], run.tol)
+                owners = owners[tsrc]
+            return xz, tris, owners
+    y = run.x[run.cells, 1]
+    cut = np.flatnonzero((y.min(axis=1) <= 0) & (y.max(axis=1) >= 0))
+    return run.x[run.cells[cut]].mean(axis=1)[:, [0, 2]], None, cut
+
+
+def draw_slice(ax, fig, section, window, values, label, unit, title):
+    """One panel: cell values on the section, coloured up to the 99th percentile of what the window
+    shows, because the cells at a sharp tip reach values far above the rest of the plastic zone."""
+    (x0, x1), (z0, z1) = window
+    pts, tris, owners = section
+    val = values[owners]
+    where = pts[tris].mean(axis=1) if tris is not None else pts
+    shown = val[(where[:, 0] >= x0) & (where[:, 0] <= x1) & (where[:, 1] >= z0)]
+    vmax = max(float(np.percentile(shown, 99)) if len(shown) else val.max(), 1e-12)
+    if tris is not None:
+        im = ax.tripcolor(mtri.Triangulation(pts[:, 0], pts[:, 1], tris), facecolors=val, cmap="viridis",
+                          vmin=0, vmax=vmax)  # default: no edges, no antialiasing seams
+    else:
+        levels = ticker.MaxNLocator(14).tick_values(0, vmax)
+        im = ax.tricontourf(mtri.Triangulation(pts[:, 0], pts[:, 1]), val, levels=levels, cmap="viridis", extend="max")
+    ax.set_xlim(x0, x1)
+    ax.set_ylim(z0, z1)
+    ax.set_aspect("equal")
+    ax.set_xlabel("x (nm)")
+    ax.set_ylabel("z (nm)")
+    peak = shown.max() if len(shown) else val.max()
+    ax.set_title(f"{title}\nlargest in view {peak:.3g} {unit}".rstrip())
+    fig.colorbar(im, ax=ax, label=f"{label} ({unit or '-'})", shrink=0.9, extend="max")
+
+
+def plot_stress_slice(run, curve, path):
+    depth, load = curve["depth_nm"], curve["load_uN"]
+    peak, last = int(np.argmax(load)), run.nsteps - 1
+    # 3 contact radii cover the plastic zone and the stress bulb under it; the film of the paper
+    # (300 nm under a 60 nm indent with a ~160 nm contact radius) fits with some substrate.
+    reach = 3.0 * contact_radius(curve, peak)
+    xmin = -run.hi[0] if 0 in run.mirror_axes else run.lo[0]
+    window = ((max(-reach, xmin), min(reach, run.hi[0])), (max(run.z_top - reach, run.lo[2]), run.z_top))
+    section = section_y0(run)
+    fig, axes = plt.subplots(2, 1, figsize=(7.5, 8))
+    draw_slice(axes[0], fig, section, window, run.field("von_mises", peak), "von Mises stress", "GPa",
+               f"von Mises stress at P_max = {load[peak]:.4g} uN (h = {depth[peak]:.4g} nm)")
+    draw_slice(axes[1], fig, section, window, run.field("plastic_strain", last), "equivalent plastic strain", "",
+               f"equivalent plastic strain at the last step (h = {depth[last]:.4g} nm)")
+    save(fig, path)
+
+
+# ------------------------------------------------------------------------------------------- main
+def save(fig, path):
+    fig.tight_layout()
+    fig.savefig(path, dpi=150)
+    plt.close(fig)
+    print(f"wrote {path}")
+
+
+def load_inputs(run_dir):
+    """The curve and the HDF5 file of a run, checked to agree, so that bad input fails before any
+    output is written."""
+    if not os.path.isdir(run_dir):
+        raise InputError(f"{run_dir}: no such run directory")
+    curve = read_curve(os.path.join(run_dir, CSV_NAME))
+    run = Run(os.path.join(run_dir, H5_NAME))
+    rows = len(curve["depth_nm"])
+    if run.nsteps != rows:
+        raise InputError(f"{run.path} has {run.nsteps} steps but {CSV_NAME} has {rows} rows (a run still being written?)")
+    for name in ("von_mises", "plastic_strain"):
+        if run.dataset(f"fields/{name}").shape[0] != rows:
+            raise InputError(f"{run.path}: /fields/{name} and /fields/displacement have different step counts")
+    return curve, run
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("run_dir", help="output directory of an indent run")
+    ap.add_argument("--out", help="directory for the pictures and imprint.csv (default RUN_DIR)")
+    args = ap.parse_args(argv)
+    try:
+        curve, run = load_inputs(args.run_dir)
+    except InputError as e:
+        print(f"plot-indent: error: {e}", file=sys.stderr)
+        return 2
+    out = args.out or args.run_dir
+    os.makedirs(out, exist_ok=True)
+    with run.h5:
+        plot_load_displacement(curve, os.path.join(out, "load_displacement.png"))
+        imprint(run, curve, out)
+        plot_stress_slice(run, curve, os.path.join(out, "stress_slice.png"))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
