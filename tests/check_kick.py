@@ -1,0 +1,197 @@
+#!/usr/bin/env python3
+"""Kick's law: a sharp cone in an elastic-perfectly-plastic block gives P = C h^2.
+
+  check_kick.py --indent BIN --mesh MESH --workdir DIR [--np 2] [--mpiexec M]
+                [--mpiexec-args "--oversubscribe"] [--depth 200] [--steps 20]
+                [--min-elements 5] [--tol 0.02]
+
+A rigid sharp cone (70.3 deg half-angle, -indenter_radius 0) is pressed, frictionless and without
+unloading, into the quarter block of tests/meshes/hertz_block.geo (region `domain`, E = 100 GPa,
+nu = 0.3, von Mises yield 1 GPa without hardening, symmetry planes left and front, bottom fixed).
+Neither the cone nor the material has a length scale, so P / h^2 is the same at every depth; the
+mesh brings one in (the elements), and the check applies once the contact radius spans at least
+--min-elements elements: a = sqrt(A / pi) from the contact area A of load_displacement.csv (whole
+indent, symmetry included) reaches the --min-elements-th node from the tip along the mesh edge
+y = z = 0 (the element boundaries along the radius, read from the mesh). Over those steps every
+P / h^2 must lie within --tol of their mean.
+
+The contact grows by whole nodes, so P / h^2 of these Q1 meshes rises and falls with every ring of
+nodes that enters: by +-3% to +-6% on every graded block of hertz_block.geo that runs in minutes
+(r from 1.16 to 1.5, 4k to 37k dofs, 10 or 20 steps), with the blocks 4 times wider giving the same
+numbers. Finer steps do not remove it (it follows the mesh), and Q2 elements did not either. The
+2% default is therefore out of reach on those meshes; tests/CMakeLists.txt passes the tolerance the
+run meets with margin (hertz_kick.msh, L 5000, N 14, r 1.3, 200 nm in 20 steps: largest deviation
+5.2%, --tol 0.08).
+
+Exit status: 0 pass, 1 a check or the run failed, 2 bad arguments.
+"""
+import argparse
+import csv
+import math
+import os
+import shlex
+import subprocess
+import sys
+import time
+
+E, NU, YIELD = 100.0, 0.3, 1.0
+
+INDENT_OPTIONS = [
+    "-domain_young", str(E), "-domain_poisson", str(NU),
+    "-domain_model", "plastic", "-domain_yield", str(YIELD), "-domain_hardening", "linear", "-domain_hardening_slope", "0",
+    "-bc_symmetry", "left,front", "-bc_fixed", "bottom",
+    "-indenter_type", "cone", "-indenter_radius", "0", "-contact_friction", "0", "-load_unload", "0",
+    "-contact_rho_initial", "100", "-contact_uzawa_rtol", "1e-4", "-snes_atol", "1e-6",
+    "-ksp_type", "preonly", "-pc_type", "lu", "-pc_factor_mat_solver_type", "mumps",
+    "-output_fields", "0", "-quiet",
+]
+
+
+def bad_input(msg):
+    print(f"check_kick.py: {msg}", file=sys.stderr)
+    sys.exit(2)
+
+
+def parse():
+    ap = argparse.ArgumentParser(prog="check_kick.py", description=__doc__.split("\n")[0])
+    ap.add_argument("--indent", required=True, help="the indent executable")
+    ap.add_argument("--mesh", required=True, help="quarter block made from tests/meshes/hertz_block.geo (ASCII msh 2.2 or 4.1)")
+    ap.add_argument("--workdir", required=True, help="output directory (created)")
+    ap.add_argument("--np", type=int, default=2, help="MPI ranks (2)")
+    ap.add_argument("--mpiexec", default=os.environ.get("MPIEXEC", "mpiexec"))
+    ap.add_argument("--mpiexec-args", default="--oversubscribe", help='extra mpiexec arguments ("--oversubscribe"; "" for none)')
+    ap.add_argument("--depth", type=float, default=200.0, help="largest depth, nm (200)")
+    ap.add_argument("--steps", type=int, default=20, help="load steps (20)")
+    ap.add_argument("--min-elements", type=int, default=5, help="elements the contact radius must span for a step to count (5)")
+    ap.add_argument("--tol", type=float, default=0.02, help="largest relative deviation of P/h^2 from the mean of the counted steps (0.02)")
+    args = ap.parse_args()
+    if not (os.path.isfile(args.indent) and os.access(args.indent, os.X_OK)):
+        bad_input(f"--indent '{args.indent}' is not an executable file")
+    if not os.path.isfile(args.mesh):
+        bad_input(f"--mesh '{args.mesh}' does not exist")
+    if args.np < 1 or args.steps < 1 or args.min_elements < 1:
+        bad_input("--np, --steps and --min-elements must be >= 1")
+    if not args.depth > 0 or not args.tol > 0:
+        bad_input("--depth and --tol must be > 0")
+    try:
+        args.mpiexec_args = shlex.split(args.mpiexec_args)
+    except ValueError as e:
+        bad_input(f"--mpiexec-args: {e}")
+    return args
+
+
+def edge_nodes(path):
+    """Sorted x > 0 of the mesh nodes on the edge y = z = 0 (ASCII gmsh 2.2 or 4.1)."""
+    try:
+        with open(path) as f:
+            lines = f.read().split("\n")
+    except (OSError, UnicodeDecodeError) as e:
+        bad_input(f"cannot read the mesh '{path}' as ASCII gmsh: {e}")
+    if "$MeshFormat" not in lines or "$Nodes" not in lines:
+        bad_input(f"'{path}' is not a gmsh mesh file (no $MeshFormat and $Nodes sections)")
+    try:
+        fmt = lines[lines.index("$MeshFormat") + 1].split()
+        if fmt[1] != "0":
+            bad_input(f"'{path}' is a binary gmsh file; write it with ASCII")
+        i = lines.index("$Nodes") + 1
+        coords = []
+        if fmt[0].startswith("2"):
+            for line in lines[i + 1:i + 1 + int(lines[i])]:
+                coords.append(tuple(map(float, line.split()[1:4])))
+        elif fmt[0].startswith("4"):
+            nblocks = int(lines[i].split()[0])
+            i += 1
+            for _ in range(nblocks):
+                n = int(lines[i].split()[3])
+                i += 1 + n  # the block header, then n node tags
+                for line in lines[i:i + n]:
+                    coords.append(tuple(map(float, line.split()[:3])))
+                i += n
+        else:
+            bad_input(f"'{path}': gmsh format {fmt[0]} is neither 2.2 nor 4.1")
+    except (ValueError, IndexError):
+        bad_input(f"'{path}': cannot read the nodes of this gmsh file")
+    scale = max((abs(c) for p in coords for c in p), default=1.0)
+    xs = sorted({x for x, y, z in coords if abs(y) <= 1e-9 * scale and abs(z) <= 1e-9 * scale and x > 1e-9 * scale})
+    if len(xs) < 2:
+        bad_input(f"'{path}' has no nodes on the edge y = z = 0, x > 0: not a quarter block of hertz_block.geo")
+    return xs
+
+
+def run_indent(args, out):
+    cmd = [args.mpiexec, *args.mpiexec_args, "-n", str(args.np), args.indent, "-mesh_file", args.mesh, *INDENT_OPTIONS,
+           "-load_depth", f"{args.depth:g}", "-load_steps", str(args.steps), "-output_dir", out, "-options_left"]
+    print("+", " ".join(shlex.quote(c) for c in cmd), flush=True)
+    start = time.time()
+    try:
+        proc = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    except OSError as e:
+        bad_input(f"cannot run {args.mpiexec}: {e}")
+    wall = time.time() - start
+    if proc.returncode != 0 or "WARNING! There are" in proc.stdout:
+        print(proc.stdout, end="")
+        print(f"FAIL: indent exited with {proc.returncode}" + (" (unused options)" if "WARNING! There are" in proc.stdout else ""))
+        return None
+    return wall
+
+
+def main():
+    args = parse()
+    xs = edge_nodes(args.mesh)
+    if len(xs) < args.min_elements:
+        bad_input(f"the mesh has only {len(xs)} elements along its edge, fewer than --min-elements {args.min_elements}")
+    a_min = xs[args.min_elements - 1]
+    out = os.path.join(os.path.abspath(args.workdir), "kick")
+    os.makedirs(out, exist_ok=True)
+    curve = os.path.join(out, "load_displacement.csv")
+    if os.path.exists(curve):
+        os.remove(curve)
+    wall = run_indent(args, out)
+    if wall is None:
+        return 1
+    try:
+        with open(curve) as f:
+            rows = list(csv.DictReader(f))
+        steps = [(int(r["step"]), float(r["depth_nm"]), float(r["load_uN"]), float(r["contact_area_nm2"]), int(r["contact_nodes"]),
+                  int(r["newton"]), int(r["cutbacks"])) for r in rows]
+    except (OSError, KeyError, ValueError) as e:
+        print(f"FAIL: cannot read {curve}: {e}")
+        return 1
+
+    print(f"cone 70.3 deg, E/Y = {E / YIELD:g}, depth {args.depth:g} nm in {args.steps} steps: {len(steps)} steps, "
+          f"{steps[-1][6] if steps else 0} cutbacks, {sum(s[5] for s in steps)} Newton iterations, {wall:.1f} s")
+    print(f"a step counts when its contact radius a = sqrt(A/pi) spans >= {args.min_elements} elements (a >= {a_min:.4g} nm; "
+          f"element edges along the radius at {', '.join(f'{x:.4g}' for x in xs[:args.min_elements + 3])}, ... nm)")
+    print(f"  {'step':>4} {'h (nm)':>8} {'P (uN)':>11} {'P/h^2 (uN/nm^2)':>16} {'a (nm)':>8} {'a/h':>5} {'elements':>8} {'nodes':>5}  counted")
+    counted = []
+    for step, h, P, A, nodes, _, _ in steps:
+        if h <= 0:
+            continue
+        a = math.sqrt(A / math.pi)
+        k = sum(1 for x in xs if x <= a * (1 + 1e-12))
+        use = k >= args.min_elements
+        if use:
+            counted.append((step, h, P / h**2))
+        print(f"  {step:4d} {h:8.3f} {P:11.5g} {P / h**2:16.6g} {a:8.4g} {a / h:5.2f} {k:8d} {nodes:5d}  {'yes' if use else 'no'}")
+    if len(counted) < 3:
+        print(f"FAIL: only {len(counted)} step(s) with the contact over >= {args.min_elements} elements (need 3): raise --depth or --steps")
+        return 1
+    c = [v for _, _, v in counted]
+    mean = sum(c) / len(c)
+    dev = [v / mean - 1 for v in c]
+    worst = max(range(len(c)), key=lambda i: abs(dev[i]))
+    half = len(c) // 2
+    trend = (sum(c[len(c) - half:]) / half) / (sum(c[:half]) / half) - 1
+    print(f"P/h^2 over the {len(c)} counted steps (h = {counted[0][1]:g} to {counted[-1][1]:g} nm): mean {mean:.6g} uN/nm^2, "
+          f"min {min(c):.6g} ({100 * (min(c) / mean - 1):+.2f}%), max {max(c):.6g} ({100 * (max(c) / mean - 1):+.2f}%), "
+          f"spread (max - min)/mean {100 * (max(c) - min(c)) / mean:.2f}%; last {half} against first {half}: {100 * trend:+.2f}%")
+    if abs(dev[worst]) > args.tol:
+        print(f"FAIL: P/h^2 at step {counted[worst][0]} (h = {counted[worst][1]:g} nm) is {100 * dev[worst]:+.2f}% off the mean "
+              f"(tolerance {100 * args.tol:g}%)")
+        return 1
+    print(f"PASS: every counted P/h^2 within {100 * args.tol:g}% of the mean (largest {100 * abs(dev[worst]):.2f}%)")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
