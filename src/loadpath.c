@@ -3,7 +3,6 @@
 PetscErrorCode IndLoadPathSetFromOptions(MPI_Comm comm, PetscBool unload_default, IndLoadPath *lp)
 {
   PetscInt steps = 1, unload_steps = 0;
-  PetscBool has_unload_steps;
 
   PetscFunctionBeginUser;
   PetscCall(PetscMemzero(lp, sizeof(*lp)));
@@ -19,7 +18,7 @@ PetscErrorCode IndLoadPathSetFromOptions(MPI_Comm comm, PetscBool unload_default
   PetscCall(PetscOptionsBool("-load_unload", "Unload after loading (and holding)", "", lp->unload, &lp->unload, NULL));
   PetscCall(PetscOptionsInt("-load_steps", "Number of load steps when none is cut back", "", steps, &steps, NULL));
   unload_steps = steps;
-  PetscCall(PetscOptionsInt("-load_unload_steps", "The first unloading increment is 1/N of the depth (default -load_steps): Oliver-Pharr fits the top of the unloading curve, which falls steeply", "", unload_steps, &unload_steps, &has_unload_steps));
+  PetscCall(PetscOptionsInt("-load_unload_steps", "The first unloading increment is 1/N of the depth (default -load_steps): Oliver-Pharr fits the top of the unloading curve, which falls steeply", "", unload_steps, &unload_steps, NULL));
   PetscCall(PetscOptionsReal("-load_unload_growth", "Factor on the increment after each accepted unloading step (up to the loading increment)", "", lp->unload_growth, &lp->unload_growth, NULL));
   lp->dt_initial = 1.0 / PetscMax(steps, 1);
   lp->dt_unload  = 1.0 / PetscMax(unload_steps, 1);

@@ -25,14 +25,13 @@ run meets with margin (hertz_kick.msh, L 5000, N 14, r 1.3, 200 nm in 20 steps: 
 
 Exit status: 0 pass, 1 a check or the run failed, 2 bad arguments.
 """
-import argparse
 import csv
 import math
 import os
-import shlex
-import subprocess
 import sys
-import time
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import meshcheck  # noqa: E402
 
 E, NU, YIELD = 100.0, 0.3, 1.0
 
@@ -46,37 +45,25 @@ INDENT_OPTIONS = [
     "-output_fields", "0", "-quiet",
 ]
 
+PROG = "check_kick.py"
+
 
 def bad_input(msg):
-    print(f"check_kick.py: {msg}", file=sys.stderr)
-    sys.exit(2)
+    meshcheck.bad_input(PROG, msg)
 
 
 def parse():
-    ap = argparse.ArgumentParser(prog="check_kick.py", description=__doc__.split("\n")[0])
-    ap.add_argument("--indent", required=True, help="the indent executable")
-    ap.add_argument("--mesh", required=True, help="quarter block made from tests/meshes/hertz_block.geo (ASCII msh 2.2 or 4.1)")
-    ap.add_argument("--workdir", required=True, help="output directory (created)")
-    ap.add_argument("--np", type=int, default=2, help="MPI ranks (2)")
-    ap.add_argument("--mpiexec", default=os.environ.get("MPIEXEC", "mpiexec"))
-    ap.add_argument("--mpiexec-args", default="--oversubscribe", help='extra mpiexec arguments ("--oversubscribe"; "" for none)')
+    ap = meshcheck.parser(PROG, __doc__, "quarter block made from tests/meshes/hertz_block.geo (ASCII msh 2.2 or 4.1)")
     ap.add_argument("--depth", type=float, default=200.0, help="largest depth, nm (200)")
     ap.add_argument("--steps", type=int, default=20, help="load steps (20)")
     ap.add_argument("--min-elements", type=int, default=5, help="elements the contact radius must span for a step to count (5)")
     ap.add_argument("--tol", type=float, default=0.02, help="largest relative deviation of P/h^2 from the mean of the counted steps (0.02)")
     args = ap.parse_args()
-    if not (os.path.isfile(args.indent) and os.access(args.indent, os.X_OK)):
-        bad_input(f"--indent '{args.indent}' is not an executable file")
-    if not os.path.isfile(args.mesh):
-        bad_input(f"--mesh '{args.mesh}' does not exist")
-    if args.np < 1 or args.steps < 1 or args.min_elements < 1:
-        bad_input("--np, --steps and --min-elements must be >= 1")
+    meshcheck.check_common(PROG, args)
+    if args.steps < 1 or args.min_elements < 1:
+        bad_input("--steps and --min-elements must be >= 1")
     if not args.depth > 0 or not args.tol > 0:
         bad_input("--depth and --tol must be > 0")
-    try:
-        args.mpiexec_args = shlex.split(args.mpiexec_args)
-    except ValueError as e:
-        bad_input(f"--mpiexec-args: {e}")
     return args
 
 
@@ -119,20 +106,7 @@ def edge_nodes(path):
 
 
 def run_indent(args, out):
-    cmd = [args.mpiexec, *args.mpiexec_args, "-n", str(args.np), args.indent, "-mesh_file", args.mesh, *INDENT_OPTIONS,
-           "-load_depth", f"{args.depth:g}", "-load_steps", str(args.steps), "-output_dir", out, "-options_left"]
-    print("+", " ".join(shlex.quote(c) for c in cmd), flush=True)
-    start = time.time()
-    try:
-        proc = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-    except OSError as e:
-        bad_input(f"cannot run {args.mpiexec}: {e}")
-    wall = time.time() - start
-    if proc.returncode != 0 or "WARNING! There are" in proc.stdout:
-        print(proc.stdout, end="")
-        print(f"FAIL: indent exited with {proc.returncode}" + (" (unused options)" if "WARNING! There are" in proc.stdout else ""))
-        return None
-    return wall
+    return meshcheck.run_indent(PROG, args, [*INDENT_OPTIONS, "-load_depth", f"{args.depth:g}", "-load_steps", str(args.steps)], out)
 
 
 def main():

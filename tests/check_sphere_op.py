@@ -24,13 +24,13 @@ The default h_max = 44 nm on hertz_q1.msh gives E_r +1.7%, h_c/h_max -0.9%, m -0
 
 Exit status: 0 pass, 1 a check or the run failed, 2 bad arguments.
 """
-import argparse
 import json
 import os
-import shlex
 import subprocess
 import sys
-import time
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import meshcheck  # noqa: E402
 
 E, NU, R = 100.0, 0.3, 1000.0
 TOL_ER, TOL_HC, TOL_M = 0.03, 0.03, 0.05
@@ -50,56 +50,28 @@ INDENT_OPTIONS = [
     "-output_fields", "0", "-quiet",
 ]
 
+PROG = "check_sphere_op.py"
+
 
 def bad_input(msg):
-    print(f"check_sphere_op.py: {msg}", file=sys.stderr)
-    sys.exit(2)
+    meshcheck.bad_input(PROG, msg)
 
 
 def parse():
-    ap = argparse.ArgumentParser(prog="check_sphere_op.py", description=__doc__.split("\n")[0])
-    ap.add_argument("--indent", required=True, help="the indent executable")
-    ap.add_argument("--mesh", required=True, help="quarter block made from tests/meshes/hertz_block.geo")
-    ap.add_argument("--workdir", required=True, help="output directory (created)")
-    ap.add_argument("--np", type=int, default=2, help="MPI ranks (2)")
-    ap.add_argument("--mpiexec", default=os.environ.get("MPIEXEC", "mpiexec"))
-    ap.add_argument("--mpiexec-args", default="--oversubscribe", help='extra mpiexec arguments ("--oversubscribe"; "" for none)')
+    ap = meshcheck.parser(PROG, __doc__, "quarter block made from tests/meshes/hertz_block.geo")
     ap.add_argument("--depth", type=float, default=44.0, help="largest depth h_max, nm (44)")
     ap.add_argument("--indent-op", help="indent-op executable: if given, also print the default -op_fraction 0.5 analysis (not checked)")
     args = ap.parse_args()
-    if not (os.path.isfile(args.indent) and os.access(args.indent, os.X_OK)):
-        bad_input(f"--indent '{args.indent}' is not an executable file")
-    if not os.path.isfile(args.mesh):
-        bad_input(f"--mesh '{args.mesh}' does not exist")
-    if args.np < 1:
-        bad_input(f"--np must be >= 1, got {args.np}")
+    meshcheck.check_common(PROG, args)
     if not 0 < args.depth < 0.2 * R:
         bad_input(f"--depth must lie in (0, {0.2 * R:g}) nm (small against R), got {args.depth:g}")
     if args.indent_op and not (os.path.isfile(args.indent_op) and os.access(args.indent_op, os.X_OK)):
         bad_input(f"--indent-op '{args.indent_op}' is not an executable file")
-    try:
-        args.mpiexec_args = shlex.split(args.mpiexec_args)
-    except ValueError as e:
-        bad_input(f"--mpiexec-args: {e}")
     return args
 
 
 def run_indent(args, out):
-    cmd = [args.mpiexec, *args.mpiexec_args, "-n", str(args.np), args.indent, "-mesh_file", args.mesh, *INDENT_OPTIONS,
-           "-load_depth", f"{args.depth:g}", "-output_dir", out, "-options_left"]
-    print("+", " ".join(shlex.quote(c) for c in cmd), flush=True)
-    start = time.time()
-    try:
-        proc = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-    except OSError as e:
-        bad_input(f"cannot run {args.mpiexec}: {e}")
-    wall = time.time() - start
-    text = proc.stdout
-    if proc.returncode != 0 or "WARNING! There are" in text:
-        print(text, end="")
-        print(f"FAIL: indent exited with {proc.returncode}" + (" (unused options)" if "WARNING! There are" in text else ""))
-        return None
-    return wall
+    return meshcheck.run_indent(PROG, args, [*INDENT_OPTIONS, "-load_depth", f"{args.depth:g}"], out)
 
 
 def main():
