@@ -2,11 +2,11 @@
 """Kick's law: a sharp cone in an elastic-perfectly-plastic block gives P = C h^2.
 
   check_kick.py --indent BIN --mesh MESH --workdir DIR [--np 2] [--mpiexec M]
-                [--mpiexec-args "--oversubscribe"] [--depth 200] [--steps 20]
+                [--mpiexec-args "--oversubscribe"] [--depth 36] [--steps 12]
                 [--min-elements 5] [--tol 0.02]
 
 A rigid sharp cone (70.3 deg half-angle, -indenter_radius 0) is pressed, frictionless and without
-unloading, into the quarter block of tests/meshes/hertz_block.geo (region `domain`, E = 100 GPa,
+unloading, into the quarter block of tests/meshes/kick_block.geo (region `domain`, E = 100 GPa,
 nu = 0.3, von Mises yield 1 GPa without hardening, symmetry planes left and front, bottom fixed).
 Neither the cone nor the material has a length scale, so P / h^2 is the same at every depth; the
 mesh brings one in (the elements), and the check applies once the contact radius spans at least
@@ -15,13 +15,10 @@ indent, symmetry included) reaches the --min-elements-th node from the tip along
 y = z = 0 (the element boundaries along the radius, read from the mesh). Over those steps every
 P / h^2 must lie within --tol of their mean.
 
-The contact grows by whole nodes, so P / h^2 of these Q1 meshes rises and falls with every ring of
-nodes that enters: by +-3% to +-6% on every graded block of hertz_block.geo that runs in minutes
-(r from 1.16 to 1.5, 4k to 37k dofs, 10 or 20 steps), with the blocks 4 times wider giving the same
-numbers. Finer steps do not remove it (it follows the mesh), and Q2 elements did not either. The
-2% default is therefore out of reach on those meshes; tests/CMakeLists.txt passes the tolerance the
-run meets with margin (hertz_kick.msh, L 5000, N 14, r 1.3, 200 nm in 20 steps: largest deviation
-5.2%, --tol 0.08).
+The contact grows by whole nodes, so the mesh under the contact must be uniform for P / h^2 to be:
+on blocks graded right from the tip (tests/meshes/hertz_block.geo) the rings of nodes widen as they
+enter, and P / h^2 rose and fell by 3 to 6% with each. kick_block.geo keeps a core of equal cubes;
+the contact must stay inside it (P / h^2 rose by 2% once the contact reached the core's edge).
 
 Exit status: 0 pass, 1 a check or the run failed, 2 bad arguments.
 """
@@ -53,9 +50,9 @@ def bad_input(msg):
 
 
 def parse():
-    ap = meshcheck.parser(PROG, __doc__, "quarter block made from tests/meshes/hertz_block.geo (ASCII msh 2.2 or 4.1)")
-    ap.add_argument("--depth", type=float, default=200.0, help="largest depth, nm (200)")
-    ap.add_argument("--steps", type=int, default=20, help="load steps (20)")
+    ap = meshcheck.parser(PROG, __doc__, "quarter block made from tests/meshes/kick_block.geo (ASCII msh 2.2 or 4.1)")
+    ap.add_argument("--depth", type=float, default=36.0, help="largest depth, nm (36)")
+    ap.add_argument("--steps", type=int, default=12, help="load steps (12)")
     ap.add_argument("--min-elements", type=int, default=5, help="elements the contact radius must span for a step to count (5)")
     ap.add_argument("--tol", type=float, default=0.02, help="largest relative deviation of P/h^2 from the mean of the counted steps (0.02)")
     args = ap.parse_args()
@@ -101,8 +98,17 @@ def edge_nodes(path):
     scale = max((abs(c) for p in coords for c in p), default=1.0)
     xs = sorted({x for x, y, z in coords if abs(y) <= 1e-9 * scale and abs(z) <= 1e-9 * scale and x > 1e-9 * scale})
     if len(xs) < 2:
-        bad_input(f"'{path}' has no nodes on the edge y = z = 0, x > 0: not a quarter block of hertz_block.geo")
+        bad_input(f"'{path}' has no nodes on the edge y = z = 0, x > 0: not a quarter block of kick_block.geo")
     return xs
+
+
+def uniform_core(xs):
+    """The radius out to which the elements along the edge are all as wide as the first."""
+    width = xs[0]
+    k = 1
+    while k < len(xs) and abs(xs[k] - xs[k - 1] - width) <= 1e-6 * width:
+        k += 1
+    return xs[k - 1]
 
 
 def run_indent(args, out):
@@ -115,6 +121,7 @@ def main():
     if len(xs) < args.min_elements:
         bad_input(f"the mesh has only {len(xs)} elements along its edge, fewer than --min-elements {args.min_elements}")
     a_min = xs[args.min_elements - 1]
+    core = uniform_core(xs)
     out = os.path.join(os.path.abspath(args.workdir), "kick")
     os.makedirs(out, exist_ok=True)
     curve = os.path.join(out, "load_displacement.csv")
@@ -147,6 +154,13 @@ def main():
         if use:
             counted.append((step, h, P / h**2))
         print(f"  {step:4d} {h:8.3f} {P:11.5g} {P / h**2:16.6g} {a:8.4g} {a / h:5.2f} {k:8d} {nodes:5d}  {'yes' if use else 'no'}")
+    a_last = math.sqrt(steps[-1][3] / math.pi) if steps else 0.0
+    # a node's tributary area reaches half an element beyond it, and so does a
+    print(f"the mesh's uniform core reaches {core:.4g} nm along the edge (elements {xs[0]:.4g} nm); "
+          f"the contact radius at the last step is {a_last:.4g} nm")
+    if a_last > core + 0.5 * xs[0]:
+        print("FAIL: the contact grew past the uniform core, where the rings of nodes widen: lower --depth or use a larger core")
+        return 1
     if len(counted) < 3:
         print(f"FAIL: only {len(counted)} step(s) with the contact over >= {args.min_elements} elements (need 3): raise --depth or --steps")
         return 1
