@@ -40,7 +40,8 @@ struct _p_IndContact {
   PetscBool   gap_current; /* gap at X + u (default), or at the undeformed horizontal position */
   PetscReal   rho_scale; /* current rho = rho_scale * mean stiffness diagonal of the node */
   PetscReal   rho_max;   /* augmented: the scale the outer loop grows to (-contact_rho_scale) */
-  PetscReal   rho_min;   /* augmented: the scale each step starts from (-contact_rho_initial) */
+  PetscReal   rho_min;   /* augmented: the largest scale a step starts from (-contact_rho_initial) */
+  PetscReal   rho_start; /* augmented: the scale the next step starts from; evolving state (see IndSolverSolve) */
   PetscReal   rtol;      /* outer loop: relative change of the reactions */
   PetscReal   pen_rtol;  /* outer loop: largest penetration, relative to the largest depth */
   PetscReal   pen_atol;  /* the same in nm, computed at setup */

@@ -226,9 +226,10 @@ PetscErrorCode IndContactCreate(IndMesh mesh, IndDisc disc, IndBC bc, IndContact
   PetscCall(PetscOptionsReal("-contact_rho_scale", "rho = scale * mean stiffness diagonal of each contact node (augmented: the largest, default 100; fixed_point: default 0.3)", "", c->rho_max, &c->rho_max, NULL));
   if (c->variant == IND_UZAWA_AUGMENTED) {
     c->rho_min = PetscMin(c->rho_min, c->rho_max);
-    PetscCall(PetscOptionsReal("-contact_rho_initial", "Augmented: the scale of rho at the start of each step, grown tenfold per outer iteration up to -contact_rho_scale", "", c->rho_min, &c->rho_min, NULL));
+    PetscCall(PetscOptionsReal("-contact_rho_initial", "Augmented: the largest scale of rho at the start of a step (lower after steps whose first Newton solve needed a smaller rho), grown tenfold per outer iteration up to -contact_rho_scale", "", c->rho_min, &c->rho_min, NULL));
   } else c->rho_min = c->rho_max;
   c->rho_scale = c->rho_min;
+  c->rho_start = c->rho_min;
   PetscCall(PetscOptionsReal("-contact_uzawa_rtol", "Outer loop: relative change of the reactions", "", c->rtol, &c->rtol, NULL));
   PetscCall(PetscOptionsReal("-contact_penetration_rtol", "Outer loop: largest penetration relative to the largest depth", "", c->pen_rtol, &c->pen_rtol, NULL));
   {

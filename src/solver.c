@@ -159,6 +159,10 @@ PetscErrorCode IndSolverSolve(IndSolver s, PetscReal load_factor, Vec U, IndSolv
   PetscInt   maxit = 0, maxf = 0;
   PetscBool  augmented = c && c->variant == IND_UZAWA_AUGMENTED ? PETSC_TRUE : PETSC_FALSE;
   Vec        Usave = NULL;
+  /* rho grows once the reactions change by less than grow_below; grown_at is the change at the last
+     growth (0: the last outer iteration did not grow rho) */
+  PetscReal  grow_below = 1e-2, grown_at = 0;
+  PetscBool  solved_once = PETSC_FALSE, first_failed = PETSC_FALSE;
 
   PetscFunctionBeginUser;
   PetscCall(PetscMemzero(r, sizeof(*r)));
@@ -181,7 +185,7 @@ PetscErrorCode IndSolverSolve(IndSolver s, PetscReal load_factor, Vec U, IndSolv
     PetscCall(SNESSetTolerances(s->snes, PetscMax(atol, 1e-3 * rtol * fnorm), rtol, stol, maxit, maxf));
   }
   if (augmented) {
-    c->rho_scale = c->rho_min;
+    c->rho_scale = c->rho_start;
     PetscCall(DMGetGlobalVector(s->dm, &Usave));
   }
   for (PetscInt k = 1; k <= (c ? c->max_outer : 1); ++k) {
@@ -204,6 +208,12 @@ PetscErrorCode IndSolverSolve(IndSolver s, PetscReal load_factor, Vec U, IndSolv
       PetscCall(VecCopy(Usave, U));
       PetscCall(IndContactRestoreReactions(c));
       c->rho_scale *= 0.1;
+      if (!solved_once) first_failed = PETSC_TRUE;
+      /* Growing at this change was too early: without a tighter threshold rho grew straight back and
+         Newton stalled again, every other outer iteration (Berkovich unloading: 3 to 5 times a step,
+         10 to 18 Newton iterations each). */
+      if (grown_at > 0) grow_below = PetscMin(grow_below, 0.1 * grown_at);
+      grown_at = 0;
       if (c->monitor) PetscCall(PetscPrintf(c->comm, "    uzawa %2" PetscInt_FMT ": newton %2" PetscInt_FMT " failed (%s), retried with rho scale %g\n", k, its, s->stalled ? "stalled" : SNESConvergedReasons[r->reason], (double)c->rho_scale));
       continue;
     }
@@ -219,6 +229,13 @@ PetscErrorCode IndSolverSolve(IndSolver s, PetscReal load_factor, Vec U, IndSolv
       r->converged = PETSC_TRUE;
       PetscFunctionReturn(PETSC_SUCCESS);
     }
+    if (augmented && !solved_once) {
+      /* Steps alike follow one another (the top of an unloading curve: each first Newton solve
+         stalled at rho_min, 13 wasted iterations a step), so the next step starts where this one's
+         first solve succeeded, and back up tenfold (to rho_min) after a step that needed no retry. */
+      c->rho_start = first_failed ? c->rho_scale : PetscMin(c->rho_min, 10.0 * c->rho_start);
+      solved_once  = PETSC_TRUE;
+    }
     PetscCall(IndContactUpdate(c, U, &r->contact));
     if (c->monitor)
       PetscCall(PetscPrintf(c->comm, "    uzawa %2" PetscInt_FMT ": newton %2" PetscInt_FMT "  contact %5" PetscInt_FMT " (stick %5" PetscInt_FMT ", slip %5" PetscInt_FMT ")  load %.6e uN  penetration %.3e nm  reaction change %.3e  rho scale %g\n", k, its, r->contact.contact, r->contact.stick, r->contact.slip,
@@ -232,7 +249,11 @@ PetscErrorCode IndSolverSolve(IndSolver s, PetscReal load_factor, Vec U, IndSolv
     /* Once the contact state has settled (reactions within 1% of the last), Newton copes with a
        larger rho, which speeds up the remaining outer iterations; before, a larger rho mostly made
        Newton stall (Berkovich unloading: at every step). */
-    if (augmented && r->contact.change < 1e-2) c->rho_scale = PetscMin(c->rho_max, 10.0 * c->rho_scale);
+    grown_at = 0;
+    if (augmented && r->contact.change < grow_below && c->rho_scale < c->rho_max) {
+      c->rho_scale = PetscMin(c->rho_max, 10.0 * c->rho_scale);
+      grown_at     = PetscMax(r->contact.change, PETSC_SMALL);
+    }
     /* A growing change means rho is past the fixed point's stability limit: halve it, for good. */
     if (c->variant == IND_UZAWA_FIXED_POINT && r->contact.change > last_change) {
       c->rho_scale *= 0.5;
