@@ -163,6 +163,7 @@ PetscErrorCode IndSolverSolve(IndSolver s, PetscReal load_factor, Vec U, IndSolv
      growth (0: the last outer iteration did not grow rho) */
   PetscReal  grow_below = 1e-2, grown_at = 0;
   PetscBool  solved_once = PETSC_FALSE, first_failed = PETSC_FALSE;
+  PetscBool  rho_changed = PETSC_TRUE; /* rho differs from the last successful outer iteration's */
 
   PetscFunctionBeginUser;
   PetscCall(PetscMemzero(r, sizeof(*r)));
@@ -213,7 +214,8 @@ PetscErrorCode IndSolverSolve(IndSolver s, PetscReal load_factor, Vec U, IndSolv
          Newton stalled again, every other outer iteration (Berkovich unloading: 3 to 5 times a step,
          10 to 18 Newton iterations each). */
       if (grown_at > 0) grow_below = PetscMin(grow_below, 0.1 * grown_at);
-      grown_at = 0;
+      grown_at    = 0;
+      rho_changed = PETSC_TRUE;
       if (c->monitor) PetscCall(PetscPrintf(c->comm, "    uzawa %2" PetscInt_FMT ": newton %2" PetscInt_FMT " failed (%s), retried with rho scale %g\n", k, its, s->stalled ? "stalled" : SNESConvergedReasons[r->reason], (double)c->rho_scale));
       continue;
     }
@@ -250,10 +252,19 @@ PetscErrorCode IndSolverSolve(IndSolver s, PetscReal load_factor, Vec U, IndSolv
        larger rho, which speeds up the remaining outer iterations; before, a larger rho mostly made
        Newton stall (Berkovich unloading: at every step). */
     grown_at = 0;
-    if (augmented && r->contact.change < grow_below && c->rho_scale < c->rho_max) {
+    if (augmented && !rho_changed && r->contact.change > 0.99 * last_change && c->rho_scale > 1e-2 * c->rho_min * (1 + 1e-12)) {
+      /* No progress at an unchanged rho: the outer loop cycles (a node flipping in and out of the
+         contact; at rho 100 on the h_tip 10 paper case, a 2-cycle at a change of 2.3e-5 until the
+         50-iteration limit cut the step). A smaller rho damps the flip. */
+      c->rho_scale *= 0.1;
+      grow_below  = PetscMin(grow_below, 0.1 * r->contact.change);
+      rho_changed = PETSC_TRUE;
+      if (c->monitor) PetscCall(PetscPrintf(c->comm, "    uzawa: reaction change stagnates, rho scale lowered to %g\n", (double)c->rho_scale));
+    } else if (augmented && r->contact.change < grow_below && c->rho_scale < c->rho_max) {
       c->rho_scale = PetscMin(c->rho_max, 10.0 * c->rho_scale);
       grown_at     = PetscMax(r->contact.change, PETSC_SMALL);
-    }
+      rho_changed  = PETSC_TRUE;
+    } else rho_changed = PETSC_FALSE;
     /* A growing change means rho is past the fixed point's stability limit: halve it, for good. */
     if (c->variant == IND_UZAWA_FIXED_POINT && r->contact.change > last_change) {
       c->rho_scale *= 0.5;
