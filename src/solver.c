@@ -164,6 +164,8 @@ PetscErrorCode IndSolverSolve(IndSolver s, PetscReal load_factor, Vec U, IndSolv
   PetscReal  grow_below = 1e-2, grown_at = 0;
   PetscBool  solved_once = PETSC_FALSE, first_failed = PETSC_FALSE;
   PetscBool  rho_changed = PETSC_TRUE; /* rho differs from the last successful outer iteration's */
+  /* rho is lowered (after a failed Newton solve or a cycle) no further than rho_min / 100 */
+  const PetscReal rho_floor = c ? 1e-2 * c->rho_min * (1 + 1e-12) : 0;
 
   PetscFunctionBeginUser;
   PetscCall(PetscMemzero(r, sizeof(*r)));
@@ -202,7 +204,7 @@ PetscErrorCode IndSolverSolve(IndSolver s, PetscReal load_factor, Vec U, IndSolv
     r->newton += its;
     r->linear += lits;
     r->outer = k;
-    if (r->reason <= 0 && r->reason != SNES_DIVERGED_FUNCTION_DOMAIN && augmented && c->rho_scale > 1e-2 * c->rho_min * (1 + 1e-12)) {
+    if (r->reason <= 0 && r->reason != SNES_DIVERGED_FUNCTION_DOMAIN && augmented && c->rho_scale > rho_floor) {
       /* Newton failed at a rho too large for it here: redo this outer iteration from its start
          with rho ten times smaller (down to rho_min / 100, where the augmented loop is close to the
          fixed point's robust one). */
@@ -250,7 +252,7 @@ PetscErrorCode IndSolverSolve(IndSolver s, PetscReal load_factor, Vec U, IndSolv
     }
     grown_at = 0;
     if (augmented && !rho_changed && r->contact.change > 0.99 * last_change && PetscAbsReal(r->contact.load - last_load) < 0.1 * r->contact.change * PetscAbsReal(r->contact.load) &&
-        c->rho_scale > 1e-2 * c->rho_min * (1 + 1e-12)) {
+        c->rho_scale > rho_floor) {
       /* The reactions change as much as last time at an unchanged rho, yet their sum stays put: the
          outer loop cycles (a node flipping in and out of the contact; at rho 100 on the h_tip 10
          paper case, a 2-cycle at a change of 2.3e-5 with the load fixed to 7 digits, until the
