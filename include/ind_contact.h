@@ -5,11 +5,11 @@
    committed copy (end of the last accepted step) and a current one (the outer Uzawa iterate).
 
    Two couplings with the Newton solve, by -contact_uzawa:
+   - newton (default, contact_newton.c): semi-smooth Newton; the reaction of a node is the residual
+     of its rows without contact, and those rows hold the bi-potential projection's fixed point
+     instead, with its generalized derivative in the Jacobian; the outer update only checks it;
    - fixed_point: the reactions are frozen during each SNES solve and updated after it by the
-     bi-potential predictor-corrector;
-   - augmented: inside SNES the contact force is the projected reaction as a function of the
-     displacement, with its generalized derivative in the Jacobian; the outer loop updates the
-     multipliers. */
+     bi-potential predictor-corrector (the paper's Uzawa loop). */
 #include <petscmat.h>
 #include "ind_mesh.h"
 #include "ind_disc.h"
@@ -17,7 +17,7 @@
 #include "ind_indenter.h"
 #include "ind_bipotential.h"
 
-typedef enum { IND_UZAWA_FIXED_POINT, IND_UZAWA_AUGMENTED } IndUzawa;
+typedef enum { IND_UZAWA_FIXED_POINT, IND_UZAWA_NEWTON } IndUzawa;
 extern const char *const IndUzawaTypes[];
 
 /* The state of the contact after an outer iteration, summed over all ranks. */
@@ -26,6 +26,7 @@ typedef struct {
   PetscReal load;                 /* indenter load P, nN: minus the z force on the body, times the symmetry factor */
   PetscReal penetration;          /* largest -gap, nm (0 when none penetrates) */
   PetscReal change;               /* |R_new - R| / |R_new| of the update (0 when both vanish) */
+  PetscReal mismatch;             /* |R_new - R|, nN: the complementarity residual of the Newton variant */
   PetscReal area;                 /* projected area of the contact nodes' tributary faces, nm^2, times symmetry */
   PetscReal pileup;               /* largest height of a contact-surface node above the undeformed surface, nm */
   PetscReal deepest;              /* largest depth of a contact-surface node below it, nm */
@@ -38,10 +39,7 @@ struct _p_IndContact {
   IndUzawa    variant;
   PetscReal   mu;        /* Coulomb friction coefficient */
   PetscBool   gap_current; /* gap at X + u (default), or at the undeformed horizontal position */
-  PetscReal   rho_scale; /* current rho = rho_scale * mean stiffness diagonal of the node */
-  PetscReal   rho_max;   /* augmented: the scale the outer loop grows to (-contact_rho_scale) */
-  PetscReal   rho_min;   /* augmented: the largest scale a step starts from (-contact_rho_initial) */
-  PetscReal   rho_start; /* augmented: the scale the next step starts from; evolving state (see IndSolverSolve) */
+  PetscReal   rho_scale; /* rho = rho_scale * mean stiffness diagonal of the node */
   PetscReal   rtol;      /* outer loop: relative change of the reactions */
   PetscReal   pen_rtol;  /* outer loop: largest penetration, relative to the largest depth */
   PetscReal   pen_atol;  /* the same in nm, computed at setup */
@@ -54,7 +52,9 @@ struct _p_IndContact {
   PetscReal  *X;        /* 3n reference positions */
   PetscReal  *kdiag;    /* n mean stiffness diagonals: rho_i = rho_scale * kdiag_i */
   PetscReal  *R, *Rc;   /* 3n current and committed reactions */
-  PetscReal  *Rs;       /* 3n reactions saved at the start of an outer iteration */
+  PetscReal  *L;        /* newton: 3n multipliers (residual without contact) of the last residual */
+  PetscReal  *Lu;       /* newton: 3n node displacements of that residual */
+  PetscInt   *fixed;    /* n masks: bit d set when component d of the node is held by a boundary condition */
   PetscReal  *Uc;       /* 3n displacement at the committed state */
   PetscReal  *A;        /* n horizontal tributary areas (projected on z) */
   PetscInt   *status;   /* n, IndContactStatus of the last update */
@@ -64,21 +64,28 @@ struct _p_IndContact {
 /* Reads -indenter_* and -contact_* options; *contact is NULL when no -indenter_type is given. */
 PetscErrorCode IndContactCreate(IndMesh mesh, IndDisc disc, IndBC bc, IndContact *contact);
 PetscErrorCode IndContactDestroy(IndContact *contact);
-/* rho per node from the diagonal of the (unconstrained) stiffness K; pen_atol from the largest depth. */
-PetscErrorCode IndContactSetUp(IndContact contact, Mat K, PetscReal depth_max);
-/* F -= contact forces at the displacement U (global vectors); the frozen reactions, or the projected
-   ones of the augmented variant. */
+/* rho per node from the diagonal of the (unconstrained) stiffness K; pen_atol from the largest depth;
+   which components of the nodes the (set up) boundary conditions hold. */
+PetscErrorCode IndContactSetUp(IndContact contact, IndBC bc, Mat K, PetscReal depth_max);
+/* F holds the residual without contact at U (global vectors, before boundary conditions): fixed
+   point, F -= frozen reactions; newton, the contact nodes' rows become the complementarity function. */
 PetscErrorCode IndContactResidual(IndContact contact, Vec U, Vec F);
-/* Augmented variant: J += minus the derivative of the contact forces; assembles J. */
+/* Newton: replaces the contact nodes' rows of the assembled J by the derivative of the
+   complementarity function at U, which must be the last residual's displacement. */
 PetscErrorCode IndContactJacobian(IndContact contact, Vec U, Mat J);
-/* The outer update: R <- projection of the predictor at U; fills the summary. */
+/* The semi-smooth Newton strategy (contact_newton.c). */
+PetscErrorCode IndContactNewtonResidual(IndContact contact, Vec U, Vec F);
+PetscErrorCode IndContactNewtonJacobian(IndContact contact, Vec U, Mat J);
+/* Its rows for one node, pure: K the node's 3 rows of the tangent (3 x ncols, row-major), diag the
+   positions of the node's own 3 dofs among the columns, P = Q D Q^T and B = rho Q D G (3x3,
+   global axes), mask the components held by boundary conditions. out = (I - P) M K + B at diag. */
+void IndContactNewtonRows(const PetscReal P[9], const PetscReal B[9], PetscInt mask, PetscInt ncols, const PetscInt diag[3], const PetscReal *K, PetscReal *out);
+/* The outer update: R <- projection of the predictor at U (from the multipliers of the last residual,
+   which must be at U, or the frozen reactions); fills the summary, whose change is |R - multiplier|. */
 PetscErrorCode IndContactUpdate(IndContact contact, Vec U, IndContactSummary *summary);
 /* Contact pressure (normal reaction over tributary area, GPa) and status (0 open, 1 stick, 2 slip) of
    each contact node at U, in the first two components of its node in the global vector G (zero
    elsewhere). */
 PetscErrorCode IndContactNodalFields(IndContact contact, Vec U, Vec G);
-/* Save / restore the current reactions around an outer iteration that may be retried. */
-PetscErrorCode IndContactSaveReactions(IndContact contact);
-PetscErrorCode IndContactRestoreReactions(IndContact contact);
 PetscErrorCode IndContactCommit(IndContact contact, Vec U);
 PetscErrorCode IndContactRollback(IndContact contact);

@@ -1,6 +1,6 @@
-#include "ind_contact.h"
+#include "contact_node.h"
 
-const char *const IndUzawaTypes[] = {"fixed_point", "augmented", "IndUzawa", "IND_UZAWA_", NULL};
+const char *const IndUzawaTypes[] = {"fixed_point", "newton", "IndUzawa", "IND_UZAWA_", NULL};
 
 static const PetscReal deg = PETSC_PI / 180.0;
 
@@ -201,7 +201,7 @@ PetscErrorCode IndContactCreate(IndMesh mesh, IndDisc disc, IndBC bc, IndContact
 
   PetscCall(PetscCalloc1(1, &c));
   c->comm      = comm;
-  c->variant   = IND_UZAWA_AUGMENTED;
+  c->variant   = IND_UZAWA_NEWTON;
   c->rtol      = 1e-6;
   c->pen_rtol  = 1e-4;
   c->monitor   = PETSC_FALSE;
@@ -213,23 +213,13 @@ PetscErrorCode IndContactCreate(IndMesh mesh, IndDisc disc, IndBC bc, IndContact
   PetscCall(PetscOptionsReal("-indenter_surface", "z of the undeformed surface where depth 0 touches (nm; default: highest contact node)", "", ind.surface, &ind.surface, &has_surface));
   PetscCall(PetscOptionsString("-contact_surface", "Surface whose nodes may touch the indenter", "", surface, surface, sizeof(surface), NULL));
   PetscCall(PetscOptionsReal("-contact_friction", "Coulomb friction coefficient", "", c->mu, &c->mu, NULL));
-  PetscCall(PetscOptionsEnum("-contact_uzawa", "Outer loop: fixed_point (frozen reactions) or augmented (projected reactions in Newton)", "", IndUzawaTypes, (PetscEnum)c->variant, (PetscEnum *)&c->variant, NULL));
-  /* The augmented loop contracts faster the larger rho is, but Newton's residual then jumps by rho
-     times the gap where a node's status changes, and with friction it cycled between stick and slip
-     (Berkovich into a plastic film, mu = 0.1: no step past 2.5 nm at 100). So each step starts at
-     rho_min, where Newton is robust, and the outer loop grows rho tenfold per iteration up to
-     rho_max once the contact state has settled. The fixed point diverges once rho exceeds
-     2 / (largest eigenvalue of the contact compliance), about the stiffness diagonal already. */
-  c->rho_max   = c->variant == IND_UZAWA_AUGMENTED ? 100.0 : 0.3;
-  c->rho_min   = c->variant == IND_UZAWA_AUGMENTED ? 1.0 : 0.3;
-  c->max_outer = c->variant == IND_UZAWA_AUGMENTED ? 50 : 200;
-  PetscCall(PetscOptionsReal("-contact_rho_scale", "rho = scale * mean stiffness diagonal of each contact node (augmented: the largest, default 100; fixed_point: default 0.3)", "", c->rho_max, &c->rho_max, NULL));
-  if (c->variant == IND_UZAWA_AUGMENTED) {
-    c->rho_min = PetscMin(c->rho_min, c->rho_max);
-    PetscCall(PetscOptionsReal("-contact_rho_initial", "Augmented: the largest scale of rho at the start of a step (lower after steps whose first Newton solve needed a smaller rho), grown tenfold per outer iteration up to -contact_rho_scale", "", c->rho_min, &c->rho_min, NULL));
-  } else c->rho_min = c->rho_max;
-  c->rho_scale = c->rho_min;
-  c->rho_start = c->rho_min;
+  PetscCall(PetscOptionsEnum("-contact_uzawa", "Contact algorithm: newton (semi-smooth Newton, reactions from the residual) or fixed_point (reactions frozen in each Newton solve, updated between them)", "", IndUzawaTypes, (PetscEnum)c->variant, (PetscEnum *)&c->variant, NULL));
+  /* Newton: rho sets which nodes are tried active and scales their rows, not the solution; the
+     stiffness diagonal keeps those rows as well conditioned as the rest. The fixed point diverges
+     once rho exceeds 2 / (largest eigenvalue of the contact compliance), about the diagonal. */
+  c->rho_scale = c->variant == IND_UZAWA_NEWTON ? 1.0 : 0.3;
+  c->max_outer = c->variant == IND_UZAWA_NEWTON ? 20 : 200;
+  PetscCall(PetscOptionsReal("-contact_rho_scale", "rho = scale * mean stiffness diagonal of each contact node (default 1 newton, 0.3 fixed_point)", "", c->rho_scale, &c->rho_scale, NULL));
   PetscCall(PetscOptionsReal("-contact_uzawa_rtol", "Outer loop: relative change of the reactions", "", c->rtol, &c->rtol, NULL));
   PetscCall(PetscOptionsReal("-contact_penetration_rtol", "Outer loop: largest penetration relative to the largest depth", "", c->pen_rtol, &c->pen_rtol, NULL));
   {
@@ -238,7 +228,7 @@ PetscErrorCode IndContactCreate(IndMesh mesh, IndDisc disc, IndBC bc, IndContact
     PetscCall(PetscOptionsEnum("-contact_gap", "Gap at the current position of the node, or at its undeformed horizontal position (small-deformation contact)", "", gaps, (PetscEnum)gap, (PetscEnum *)&gap, NULL));
     c->gap_current = gap == 0 ? PETSC_TRUE : PETSC_FALSE;
   }
-  PetscCall(PetscOptionsInt("-contact_uzawa_max_it", "Outer iterations before the step fails (default 50 augmented, 200 fixed_point)", "", c->max_outer, &c->max_outer, NULL));
+  PetscCall(PetscOptionsInt("-contact_uzawa_max_it", "Outer iterations before the step fails (default 20 newton, 200 fixed_point)", "", c->max_outer, &c->max_outer, NULL));
   PetscCall(PetscOptionsBool("-contact_monitor", "Print a line per outer iteration", "", c->monitor, &c->monitor, NULL));
   PetscCall(PetscOptionsReal("-contact_symmetry_factor", "Load multiplier of a symmetric part model (default: 2 per symmetry plane through the axis)", "", symmetry, &symmetry, &has_sym));
   PetscOptionsEnd();
@@ -251,8 +241,7 @@ PetscErrorCode IndContactCreate(IndMesh mesh, IndDisc disc, IndBC bc, IndContact
   PetscCheck(!IndIndenterSetUp(&ind), comm, PETSC_ERR_ARG_OUTOFRANGE, "-indenter_type %s: bad -indenter_radius or -indenter_angle", IndIndenterTypes[ind.type]);
   PetscCheck(!has_axis || naxis == 2, comm, PETSC_ERR_ARG_WRONG, "-indenter_axis needs two values x,y");
   PetscCheck(c->mu >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-contact_friction must be >= 0, got %g", (double)c->mu);
-  PetscCheck(c->rho_max > 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-contact_rho_scale must be > 0, got %g", (double)c->rho_max);
-  PetscCheck(c->rho_min > 0 && c->rho_min <= c->rho_max, comm, PETSC_ERR_ARG_OUTOFRANGE, "-contact_rho_initial must lie in (0, -contact_rho_scale %g], got %g", (double)c->rho_max, (double)c->rho_min);
+  PetscCheck(c->rho_scale > 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-contact_rho_scale must be > 0, got %g", (double)c->rho_scale);
   PetscCheck(c->rtol > 0 && c->pen_rtol > 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-contact_uzawa_rtol and -contact_penetration_rtol must be > 0");
   PetscCheck(c->max_outer >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-contact_uzawa_max_it must be >= 1, got %" PetscInt_FMT, c->max_outer);
   PetscCheck(!has_sym || symmetry >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-contact_symmetry_factor must be >= 1, got %g", (double)symmetry);
@@ -272,7 +261,8 @@ PetscErrorCode IndContactCreate(IndMesh mesh, IndDisc disc, IndBC bc, IndContact
   for (PetscInt k = 0; k < n; k += 3)
     if (PetscRealPart(g[k]) > 0.5) c->n++;
   PetscCall(PetscMalloc5(c->n, &c->row, c->n, &c->grow, 3 * c->n, &c->X, c->n, &c->kdiag, c->n, &c->A));
-  PetscCall(PetscCalloc5(3 * c->n, &c->R, 3 * c->n, &c->Rc, 3 * c->n, &c->Rs, 3 * c->n, &c->Uc, c->n, &c->status));
+  PetscCall(PetscCalloc5(3 * c->n, &c->R, 3 * c->n, &c->Rc, 3 * c->n, &c->L, 3 * c->n, &c->Uc, c->n, &c->status));
+  PetscCall(PetscCalloc2(3 * c->n, &c->Lu, c->n, &c->fixed));
   c->n = 0;
   {
     PetscReal top = -PETSC_MAX_REAL;
@@ -304,15 +294,17 @@ PetscErrorCode IndContactDestroy(IndContact *c)
   PetscFunctionBeginUser;
   if (!*c) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(PetscFree5((*c)->row, (*c)->grow, (*c)->X, (*c)->kdiag, (*c)->A));
-  PetscCall(PetscFree5((*c)->R, (*c)->Rc, (*c)->Rs, (*c)->Uc, (*c)->status));
+  PetscCall(PetscFree5((*c)->R, (*c)->Rc, (*c)->L, (*c)->Uc, (*c)->status));
+  PetscCall(PetscFree2((*c)->Lu, (*c)->fixed));
   PetscCall(PetscFree(*c));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode IndContactSetUp(IndContact c, Mat K, PetscReal depth_max)
+PetscErrorCode IndContactSetUp(IndContact c, IndBC bc, Mat K, PetscReal depth_max)
 {
   Vec                d;
   const PetscScalar *v;
+  PetscScalar       *m;
 
   PetscFunctionBeginUser;
   PetscCall(MatCreateVecs(K, &d, NULL));
@@ -320,132 +312,49 @@ PetscErrorCode IndContactSetUp(IndContact c, Mat K, PetscReal depth_max)
   PetscCall(VecGetArrayRead(d, &v));
   for (PetscInt i = 0; i < c->n; ++i) c->kdiag[i] = PetscRealPart(v[c->row[i]] + v[c->row[i] + 1] + v[c->row[i] + 2]) / 3.0;
   PetscCall(VecRestoreArrayRead(d, &v));
+  PetscCall(VecZeroEntries(d));
+  PetscCall(VecGetArray(d, &m));
+  for (PetscInt k = 0; k < bc->nrows; ++k) m[bc->lrows[k]] = 1.0;
+  for (PetscInt i = 0; i < c->n; ++i) {
+    c->fixed[i] = 0;
+    for (int dd = 0; dd < 3; ++dd)
+      if (PetscRealPart(m[c->row[i] + dd]) > 0.5) c->fixed[i] |= 1 << dd;
+  }
+  PetscCall(VecRestoreArray(d, &m));
   PetscCall(VecDestroy(&d));
   c->pen_atol = c->pen_rtol * depth_max;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* The local problem of node i at displacement u (3 values): frame, predictor and projection. The
-   force on the body is f = r0 n + r1 t1 + r2 t2; D = dr/dtau; s the unit slip direction (local).
-   With either gap definition d gap / d u = n. */
-typedef struct {
-  PetscReal        gap, n[3], t1[3], t2[3], r[3], f[3], D[9], s[2];
-  IndContactStatus status;
-} NodeState;
-
-static void NodeSolve(IndContact c, PetscInt i, const PetscScalar *u, NodeState *ns)
-{
-  const PetscReal *Rv = c->R + 3 * i, *Uc = c->Uc + 3 * i;
-  PetscReal        x[3], du[3], dut[2], rl[3], tau[3], slip;
-
-  if (c->gap_current) {
-    for (int d = 0; d < 3; ++d) x[d] = c->X[3 * i + d] + PetscRealPart(u[d]);
-    IndIndenterGap(&c->indenter, x, &ns->gap, ns->n);
-    IndIndenterTangents(ns->n, ns->t1, ns->t2);
-  } else {
-    /* Small-deformation contact, as in Hertz's and Sneddon's solutions: the vertical distance from
-       the node, at its undeformed horizontal position moved by u_z, up to the indenter's surface;
-       the reaction is vertical and the tangents horizontal. */
-    PetscReal g0, g, n[3], sv = 0;
-    PetscBool hit = PETSC_FALSE;
-    for (int d = 0; d < 3; ++d) x[d] = c->X[3 * i + d] + (d == 2 ? PetscRealPart(u[d]) : 0.0);
-    IndIndenterGap(&c->indenter, x, &g0, n);
-    g = g0;
-    /* Newton along the vertical line; where it misses the indenter's underside (beside a sphere
-       or a punch) the node is far from contact, and the Euclidean gap, never larger, stands in. */
-    for (int it = 0; it < 50 && n[2] < -1e-3; ++it) {
-      const PetscReal ds = -g / n[2];
-      PetscReal       y[3] = {x[0], x[1], x[2] + sv + ds};
-      sv += ds;
-      IndIndenterGap(&c->indenter, y, &g, n);
-      if (PetscAbsReal(ds) <= 1e-12 * (1 + PetscAbsReal(sv))) {
-        hit = n[2] < -1e-3 ? PETSC_TRUE : PETSC_FALSE;
-        break;
-      }
-    }
-    if (!hit) sv = g0;
-    ns->gap = sv;
-    ns->n[0] = ns->n[1] = 0, ns->n[2] = -1;
-    ns->t1[0] = 1, ns->t1[1] = ns->t1[2] = 0;
-    ns->t2[1] = 1, ns->t2[0] = ns->t2[2] = 0;
-  }
-  /* slip relative to the indenter, which moved down by the change of depth over the step */
-  for (int d = 0; d < 3; ++d) du[d] = PetscRealPart(u[d]) - Uc[d];
-  du[2] += c->indenter.depth - c->depth_c;
-  dut[0] = du[0] * ns->t1[0] + du[1] * ns->t1[1] + du[2] * ns->t1[2];
-  dut[1] = du[0] * ns->t2[0] + du[1] * ns->t2[1] + du[2] * ns->t2[2];
-  slip   = PetscSqrtReal(dut[0] * dut[0] + dut[1] * dut[1]);
-  ns->s[0] = slip > 0 ? dut[0] / slip : 0;
-  ns->s[1] = slip > 0 ? dut[1] / slip : 0;
-  rl[0] = Rv[0] * ns->n[0] + Rv[1] * ns->n[1] + Rv[2] * ns->n[2];
-  rl[1] = Rv[0] * ns->t1[0] + Rv[1] * ns->t1[1] + Rv[2] * ns->t1[2];
-  rl[2] = Rv[0] * ns->t2[0] + Rv[1] * ns->t2[1] + Rv[2] * ns->t2[2];
-  IndBipotentialPredictor(c->mu, c->rho_scale * c->kdiag[i], rl, ns->gap, dut, tau);
-  ns->status = IndBipotentialProject(c->mu, tau, ns->r, ns->D);
-  for (int d = 0; d < 3; ++d) ns->f[d] = ns->r[0] * ns->n[d] + ns->r[1] * ns->t1[d] + ns->r[2] * ns->t2[d];
-}
-
 PetscErrorCode IndContactResidual(IndContact c, Vec U, Vec F)
 {
-  const PetscScalar *u;
-  PetscScalar       *f;
+  PetscScalar *f;
 
   PetscFunctionBeginUser;
-  PetscCall(VecGetArrayRead(U, &u));
-  PetscCall(VecGetArray(F, &f));
-  for (PetscInt i = 0; i < c->n; ++i) {
-    const PetscInt k = c->row[i];
-    if (c->variant == IND_UZAWA_FIXED_POINT)
-      for (int d = 0; d < 3; ++d) f[k + d] -= c->R[3 * i + d];
-    else {
-      NodeState ns;
-      NodeSolve(c, i, u + k, &ns);
-      for (int d = 0; d < 3; ++d) f[k + d] -= ns.f[d];
-    }
+  PetscCall(PetscLogEventBegin(IndLog.contact, 0, 0, 0, 0));
+  if (c->variant == IND_UZAWA_NEWTON) PetscCall(IndContactNewtonResidual(c, U, F));
+  else {
+    PetscCall(VecGetArray(F, &f));
+    for (PetscInt i = 0; i < c->n; ++i)
+      for (int d = 0; d < 3; ++d) f[c->row[i] + d] -= c->R[3 * i + d];
+    PetscCall(VecRestoreArray(F, &f));
   }
-  PetscCall(VecRestoreArray(F, &f));
-  PetscCall(VecRestoreArrayRead(U, &u));
+  PetscCall(PetscLogEventEnd(IndLog.contact, 0, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 PetscErrorCode IndContactJacobian(IndContact c, Vec U, Mat J)
 {
-  const PetscScalar *u;
-
   PetscFunctionBeginUser;
-  if (c->variant == IND_UZAWA_AUGMENTED) {
-    PetscCall(VecGetArrayRead(U, &u));
-    for (PetscInt i = 0; i < c->n; ++i) {
-      NodeState      ns;
-      PetscReal      Q[3][3], G[3][3], QD[3][3], B[9];
-      const PetscInt rows[3] = {c->grow[i], c->grow[i] + 1, c->grow[i] + 2};
-      NodeSolve(c, i, u + c->row[i], &ns);
-      if (ns.status == IND_CONTACT_OPEN) continue;
-      /* f = Q r(tau), dtau/du = -rho G: G's rows n + mu (s1 t1 + s2 t2), t1, t2 (the frame's own
-         rotation is left out). The residual has -f, so J += rho Q D G. */
-      for (int d = 0; d < 3; ++d) {
-        Q[d][0] = ns.n[d], Q[d][1] = ns.t1[d], Q[d][2] = ns.t2[d];
-        G[0][d] = ns.n[d] + c->mu * (ns.s[0] * ns.t1[d] + ns.s[1] * ns.t2[d]);
-        G[1][d] = ns.t1[d];
-        G[2][d] = ns.t2[d];
-      }
-      for (int a = 0; a < 3; ++a)
-        for (int b = 0; b < 3; ++b) {
-          QD[a][b] = 0;
-          for (int k = 0; k < 3; ++k) QD[a][b] += Q[a][k] * ns.D[3 * k + b];
-        }
-      for (int a = 0; a < 3; ++a)
-        for (int b = 0; b < 3; ++b) {
-          B[3 * a + b] = 0;
-          for (int k = 0; k < 3; ++k) B[3 * a + b] += c->rho_scale * c->kdiag[i] * QD[a][k] * G[k][b];
-        }
-      PetscCall(MatSetValues(J, 3, rows, 3, rows, B, ADD_VALUES));
-    }
-    PetscCall(VecRestoreArrayRead(U, &u));
-  }
-  PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
-  PetscCall(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));
+  if (c->variant == IND_UZAWA_NEWTON) PetscCall(IndContactNewtonJacobian(c, U, J));
   PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The reaction the projection starts from: the multiplier of the last residual (Newton) or the
+   frozen reaction of the last outer update (fixed point). */
+static const PetscReal *Multiplier(IndContact c, PetscInt i)
+{
+  return (c->variant == IND_UZAWA_NEWTON ? c->L : c->R) + 3 * i;
 }
 
 PetscErrorCode IndContactUpdate(IndContact c, Vec U, IndContactSummary *sum)
@@ -457,10 +366,10 @@ PetscErrorCode IndContactUpdate(IndContact c, Vec U, IndContactSummary *sum)
   PetscFunctionBeginUser;
   PetscCall(VecGetArrayRead(U, &u));
   for (PetscInt i = 0; i < c->n; ++i) {
-    NodeState ns;
-    NodeSolve(c, i, u + c->row[i], &ns);
+    IndContactNode ns;
+    IndContactNodeSolve(c, i, u + c->row[i], Multiplier(c, i), &ns);
     for (int d = 0; d < 3; ++d) {
-      red[0] += PetscSqr(ns.f[d] - c->R[3 * i + d]);
+      red[0] += PetscSqr(ns.f[d] - Multiplier(c, i)[d]);
       red[1] += PetscSqr(ns.f[d]);
       c->R[3 * i + d] = ns.f[d];
     }
@@ -480,6 +389,7 @@ PetscErrorCode IndContactUpdate(IndContact c, Vec U, IndContactSummary *sum)
   sum->slip        = cnt[IND_CONTACT_SLIP];
   sum->contact     = sum->stick + sum->slip;
   sum->change      = red[1] > 0 ? PetscSqrtReal(red[0] / red[1]) : (red[0] > 0 ? 1.0 : 0.0);
+  sum->mismatch    = PetscSqrtReal(red[0]);
   sum->load        = c->symmetry * red[2];
   sum->area        = c->symmetry * red[3];
   sum->penetration = PetscMax(red[4], 0.0);
@@ -522,26 +432,12 @@ PetscErrorCode IndContactNodalFields(IndContact c, Vec U, Vec G)
   PetscCall(VecGetArrayRead(U, &u));
   PetscCall(VecGetArray(G, &g));
   for (PetscInt i = 0; i < c->n; ++i) {
-    NodeState ns;
-    NodeSolve(c, i, u + c->row[i], &ns);
+    IndContactNode ns;
+    IndContactNodeSolve(c, i, u + c->row[i], Multiplier(c, i), &ns);
     g[c->row[i]]     = c->A[i] > 0 ? ns.r[0] / c->A[i] : 0.0;
     g[c->row[i] + 1] = (PetscReal)ns.status;
   }
   PetscCall(VecRestoreArray(G, &g));
   PetscCall(VecRestoreArrayRead(U, &u));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-PetscErrorCode IndContactSaveReactions(IndContact c)
-{
-  PetscFunctionBeginUser;
-  PetscCall(PetscArraycpy(c->Rs, c->R, 3 * c->n));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-PetscErrorCode IndContactRestoreReactions(IndContact c)
-{
-  PetscFunctionBeginUser;
-  PetscCall(PetscArraycpy(c->R, c->Rs, 3 * c->n));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -136,10 +136,14 @@ PetscErrorCode IndDiscCreate(IndMesh mesh, IndDisc *out)
   disc->degree = 1;
   PetscOptionsBegin(comm, NULL, "Discretisation", "Disc");
   PetscCall(PetscOptionsInt("-disc_degree", "Polynomial degree of the displacement: 1 (P1/Q1) or 2 (P2/Q2)", "", disc->degree, &disc->degree, NULL));
-  PetscCall(PetscOptionsInt("-disc_quadrature_order", "Order of the quadrature rule (default: PETSc's choice for the degree)", "", qorder, &qorder, NULL));
+  PetscCall(PetscOptionsInt("-disc_quadrature_order", "Order of the quadrature rule (default: 0 for P1 tetrahedra, else PETSc's choice for the degree)", "", qorder, &qorder, NULL));
   PetscOptionsEnd();
+  /* The strain of a P1 tetrahedron is constant, so one point integrates its stiffness, stress and
+     history exactly; PETSc's default rule has 8, all in the same state, at 8 times the cost of
+     every residual, Jacobian and history update. */
+  if (qorder == PETSC_DETERMINE && mesh->simplex && disc->degree == 1) qorder = 0;
   PetscCheck(disc->degree == 1 || disc->degree == 2, comm, PETSC_ERR_ARG_OUTOFRANGE, "-disc_degree must be 1 or 2, got %" PetscInt_FMT, disc->degree);
-  PetscCheck(qorder == PETSC_DETERMINE || (qorder >= 1 && qorder <= 12), comm, PETSC_ERR_ARG_OUTOFRANGE, "-disc_quadrature_order must lie in [1, 12], got %" PetscInt_FMT, qorder);
+  PetscCheck(qorder == PETSC_DETERMINE || (qorder >= 0 && qorder <= 12), comm, PETSC_ERR_ARG_OUTOFRANGE, "-disc_quadrature_order must lie in [0, 12], got %" PetscInt_FMT, qorder);
 
   PetscCall(PetscFECreateLagrange(comm, 3, 3, mesh->simplex, disc->degree, qorder, &disc->fe));
   PetscCall(PetscObjectSetName((PetscObject)disc->fe, "displacement"));

@@ -21,6 +21,7 @@ PetscErrorCode IndLogRegister(void)
   PetscCall(PetscLogEventRegister("IndNearNull", classid, &IndLog.near_null));
   PetscCall(PetscLogEventRegister("IndResidual", classid, &IndLog.residual));
   PetscCall(PetscLogEventRegister("IndJacobian", classid, &IndLog.jacobian));
+  PetscCall(PetscLogEventRegister("IndContact", classid, &IndLog.contact));
   PetscCall(PetscLogEventRegister("IndBC", classid, &IndLog.bc));
   PetscCall(PetscLogEventRegister("IndOutputWrite", classid, &IndLog.output_write));
   PetscFunctionReturn(PETSC_SUCCESS);

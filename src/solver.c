@@ -48,8 +48,7 @@ static PetscErrorCode FormJacobian(SNES snes, Vec U, Mat A, Mat P, void *ctx)
 
 /* Semi-smooth Newton can cycle for ever between contact states (stick, slip, open) of a few nodes,
    with the same residuals coming back every 2 to 5 iterations. Stopping after -newton_stall_its
-   iterations without a new smallest residual lets the contact loop retry with a smaller rho (or the
-   load step be cut) long before -snes_max_it. */
+   iterations without a new smallest residual lets the load step be cut long before -snes_max_it. */
 static PetscErrorCode ConvergedUnlessStalled(SNES snes, PetscInt it, PetscReal xnorm, PetscReal snorm, PetscReal fnorm, SNESConvergedReason *reason, void *ctx)
 {
   IndSolver s = (IndSolver)ctx;
@@ -113,8 +112,8 @@ PetscErrorCode IndSolverCreate(DM dm, IndAssembly assembly, IndBC bc, IndContact
   PetscCall(SNESSetFunction(s->snes, NULL, FormResidual, s));
   PetscCall(SNESSetJacobian(s->snes, s->J, s->J, FormJacobian, s));
   PetscCall(SNESGetKSP(s->snes, &ksp));
-  /* The frictional part of the augmented contact Jacobian is not symmetric. */
-  PetscCall(KSPSetType(ksp, contact && contact->variant == IND_UZAWA_AUGMENTED && contact->mu > 0 ? KSPGMRES : KSPCG));
+  /* The contact rows of the semi-smooth Newton Jacobian make it unsymmetric. */
+  PetscCall(KSPSetType(ksp, contact && contact->variant == IND_UZAWA_NEWTON ? KSPGMRES : KSPCG));
   /* Tighter than Newton's own 1e-8 so a linear step converges in one Newton iteration. */
   PetscCall(KSPSetTolerances(ksp, 1e-10, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT));
   PetscCall(KSPGetPC(ksp, &pc));
@@ -128,12 +127,13 @@ PetscErrorCode IndSolverCreate(DM dm, IndAssembly assembly, IndBC bc, IndContact
      their own at each setup: no failure, and still 30% faster than rebuilding the interpolation. */
   PetscCall(PCGAMGSetUseSAEstEig(pc, PETSC_FALSE));
   if (contact) {
-    /* Full semi-smooth Newton steps: a backtracking line search crawls in steps of 0.1 when a node
-       leaves the contact (the residual's kink), e.g. 149 iterations for the last unloading step of
-       an elastic sphere where full steps take 11. */
+    /* Semi-smooth Newton is only locally convergent: at a reversal (the top of an unloading curve)
+       full steps cycled between stick and slip until the step was cut, three times in a row on the
+       README's paper case. Backtracking on |F|^2, the standard globalization of semi-smooth Newton,
+       took every step there with 5 Newton iterations on average. */
     SNESLineSearch ls;
     PetscCall(SNESGetLineSearch(s->snes, &ls));
-    PetscCall(SNESLineSearchSetType(ls, SNESLINESEARCHBASIC));
+    PetscCall(SNESLineSearchSetType(ls, SNESLINESEARCHBT));
   }
   s->stall_its = 10;
   PetscOptionsBegin(PetscObjectComm((PetscObject)dm), NULL, "Newton", "Solver");
@@ -146,7 +146,8 @@ PetscErrorCode IndSolverCreate(DM dm, IndAssembly assembly, IndBC bc, IndContact
     /* rho from the stiffness of the undeformed body, before any condition touches its diagonal */
     PetscCall(VecZeroEntries(s->Uloc));
     PetscCall(IndAssemblyJacobian(assembly, s->Uloc, s->J));
-    PetscCall(IndContactSetUp(contact, s->J, depth_max));
+    PetscCall(IndBCSetUp(bc));
+    PetscCall(IndContactSetUp(contact, bc, s->J, depth_max));
   }
   *out = s;
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -155,17 +156,9 @@ PetscErrorCode IndSolverCreate(DM dm, IndAssembly assembly, IndBC bc, IndContact
 PetscErrorCode IndSolverSolve(IndSolver s, PetscReal load_factor, Vec U, IndSolveResult *r)
 {
   IndContact c           = s->contact;
-  PetscReal  last_change = PETSC_MAX_REAL, last_load = 0, atol = 0, rtol = 0, stol = 0;
+  PetscReal  last_change = PETSC_MAX_REAL, atol = 0, rtol = 0, stol = 0, step_atol = 0;
   PetscInt   maxit = 0, maxf = 0;
-  PetscBool  augmented = c && c->variant == IND_UZAWA_AUGMENTED ? PETSC_TRUE : PETSC_FALSE;
-  Vec        Usave = NULL;
-  /* rho grows once the reactions change by less than grow_below; grown_at is the change at the last
-     growth (0: the last outer iteration did not grow rho) */
-  PetscReal  grow_below = 1e-2, grown_at = 0;
-  PetscBool  solved_once = PETSC_FALSE, first_failed = PETSC_FALSE;
-  PetscBool  rho_changed = PETSC_TRUE; /* rho differs from the last successful outer iteration's */
-  /* rho is lowered (after a failed Newton solve or a cycle) no further than rho_min / 100 */
-  const PetscReal rho_floor = c ? 1e-2 * c->rho_min * (1 + 1e-12) : 0;
+  Vec        F     = NULL;
 
   PetscFunctionBeginUser;
   PetscCall(PetscMemzero(r, sizeof(*r)));
@@ -175,28 +168,19 @@ PetscErrorCode IndSolverSolve(IndSolver s, PetscReal load_factor, Vec U, IndSolv
      is what zeroing their columns in the Jacobian assumes. */
   PetscCall(IndBCApplySolution(s->bc, load_factor, U));
   if (c) {
-    /* Later outer iterations start from small residuals (the multipliers barely move), and a
-       tolerance relative to those alone would ask Newton for round-off, where the projection's kinks
-       make it cycle. Their floor is 1e-3 rtol times the step's first residual. */
-    Vec       F;
+    /* A later outer iteration starts from a small residual, and a tolerance relative to it alone
+       would ask Newton for round-off, where the projection's kinks make it cycle. Its floor is 1e-3
+       rtol times the step's first residual. */
     PetscReal fnorm;
     PetscCall(SNESGetTolerances(s->snes, &atol, &rtol, &stol, &maxit, &maxf));
     PetscCall(DMGetGlobalVector(s->dm, &F));
     PetscCall(FormResidual(NULL, U, F, s));
     PetscCall(VecNorm(F, NORM_2, &fnorm));
-    PetscCall(DMRestoreGlobalVector(s->dm, &F));
-    PetscCall(SNESSetTolerances(s->snes, PetscMax(atol, 1e-3 * rtol * fnorm), rtol, stol, maxit, maxf));
-  }
-  if (augmented) {
-    c->rho_scale = c->rho_start;
-    PetscCall(DMGetGlobalVector(s->dm, &Usave));
+    step_atol = PetscMax(atol, 1e-3 * rtol * fnorm);
+    PetscCall(SNESSetTolerances(s->snes, step_atol, rtol, stol, maxit, maxf));
   }
   for (PetscInt k = 1; k <= (c ? c->max_outer : 1); ++k) {
     PetscInt its, lits;
-    if (augmented) {
-      PetscCall(VecCopy(U, Usave));
-      PetscCall(IndContactSaveReactions(c));
-    }
     PetscCall(SNESSolve(s->snes, NULL, U));
     PetscCall(SNESGetConvergedReason(s->snes, &r->reason));
     PetscCall(SNESGetIterationNumber(s->snes, &its));
@@ -204,84 +188,48 @@ PetscErrorCode IndSolverSolve(IndSolver s, PetscReal load_factor, Vec U, IndSolv
     r->newton += its;
     r->linear += lits;
     r->outer = k;
-    if (r->reason <= 0 && r->reason != SNES_DIVERGED_FUNCTION_DOMAIN && augmented && c->rho_scale > rho_floor) {
-      /* Newton failed at a rho too large for it here: redo this outer iteration from its start
-         with rho ten times smaller (down to rho_min / 100, where the augmented loop is close to the
-         fixed point's robust one). */
-      PetscCall(VecCopy(Usave, U));
-      PetscCall(IndContactRestoreReactions(c));
-      c->rho_scale *= 0.1;
-      if (!solved_once) first_failed = PETSC_TRUE;
-      /* Growing at this change was too early: without a tighter threshold rho grew straight back and
-         Newton stalled again, every other outer iteration (Berkovich unloading: 3 to 5 times a step,
-         10 to 18 Newton iterations each). */
-      if (grown_at > 0) grow_below = PetscMin(grow_below, 0.1 * grown_at);
-      grown_at    = 0;
-      rho_changed = PETSC_TRUE;
-      if (c->monitor) PetscCall(PetscPrintf(c->comm, "    uzawa %2" PetscInt_FMT ": newton %2" PetscInt_FMT " failed (%s), retried with rho scale %g\n", k, its, s->stalled ? "stalled" : SNESConvergedReasons[r->reason], (double)c->rho_scale));
-      continue;
-    }
     if (r->reason <= 0) {
-      if (c) PetscCall(SNESSetTolerances(s->snes, atol, rtol, stol, maxit, maxf));
-      if (Usave) PetscCall(DMRestoreGlobalVector(s->dm, &Usave));
       if (r->reason == SNES_DIVERGED_FUNCTION_DOMAIN) PetscCall(PetscSNPrintf(r->why, sizeof(r->why), "return map failed at %" PetscInt_FMT " quadrature points", s->nfailed));
-      else if (s->stalled) PetscCall(PetscSNPrintf(r->why, sizeof(r->why), "Newton stalled: no smaller residual in %" PetscInt_FMT " iterations (-newton_stall_its)%s", s->stall_its, c ? " in the contact loop" : ""));
-      else PetscCall(PetscSNPrintf(r->why, sizeof(r->why), "Newton: %s after %" PetscInt_FMT " iterations%s", SNESConvergedReasons[r->reason], its, c ? " in the contact loop" : ""));
-      PetscFunctionReturn(PETSC_SUCCESS);
+      else if (s->stalled) PetscCall(PetscSNPrintf(r->why, sizeof(r->why), "Newton stalled: no smaller residual in %" PetscInt_FMT " iterations (-newton_stall_its)%s", s->stall_its, c ? " with contact" : ""));
+      else PetscCall(PetscSNPrintf(r->why, sizeof(r->why), "Newton: %s after %" PetscInt_FMT " iterations%s", SNESConvergedReasons[r->reason], its, c ? " with contact" : ""));
+      break;
     }
     if (!c) {
       r->converged = PETSC_TRUE;
-      PetscFunctionReturn(PETSC_SUCCESS);
+      break;
     }
-    if (augmented && !solved_once) {
-      /* Steps alike follow one another (the top of an unloading curve: each first Newton solve
-         stalled at rho_min, 13 wasted iterations a step), so the next step starts where this one's
-         first solve succeeded, and back up tenfold (to rho_min) after a step that needed no retry. */
-      c->rho_start = first_failed ? c->rho_scale : PetscMin(c->rho_min, 10.0 * c->rho_start);
-      solved_once  = PETSC_TRUE;
-    }
+    /* The multipliers of the Newton variant come from the residual at U; SNES may have evaluated
+       it last elsewhere (a line search). */
+    if (c->variant == IND_UZAWA_NEWTON) PetscCall(FormResidual(NULL, U, F, s));
     PetscCall(IndContactUpdate(c, U, &r->contact));
     if (c->monitor)
-      PetscCall(PetscPrintf(c->comm, "    uzawa %2" PetscInt_FMT ": newton %2" PetscInt_FMT "  contact %5" PetscInt_FMT " (stick %5" PetscInt_FMT ", slip %5" PetscInt_FMT ")  load %.6e uN  penetration %.3e nm  reaction change %.3e  rho scale %g\n", k, its, r->contact.contact, r->contact.stick, r->contact.slip,
+      PetscCall(PetscPrintf(c->comm, "    outer %2" PetscInt_FMT ": newton %2" PetscInt_FMT "  contact %5" PetscInt_FMT " (stick %5" PetscInt_FMT ", slip %5" PetscInt_FMT ")  load %.6e uN  penetration %.3e nm  reaction change %.3e  rho scale %g\n", k, its, r->contact.contact, r->contact.stick, r->contact.slip,
                             (double)(r->contact.load * 1e-3), (double)r->contact.penetration, (double)r->contact.change, (double)c->rho_scale));
-    if (r->contact.change <= c->rtol && r->contact.penetration <= c->pen_atol) {
+    /* The Newton variant's change is its complementarity residual, part of the residual Newton has
+       just driven below its tolerance; relative to a vanishing reaction (the last node leaving the
+       contact) it could never be small, so Newton's absolute tolerance also accepts it. */
+    if ((r->contact.change <= c->rtol || (c->variant == IND_UZAWA_NEWTON && r->contact.mismatch <= step_atol)) && r->contact.penetration <= c->pen_atol) {
       r->converged = PETSC_TRUE;
-      PetscCall(SNESSetTolerances(s->snes, atol, rtol, stol, maxit, maxf));
-      if (Usave) PetscCall(DMRestoreGlobalVector(s->dm, &Usave));
-      PetscFunctionReturn(PETSC_SUCCESS);
+      break;
     }
-    grown_at = 0;
-    if (augmented && !rho_changed && r->contact.change > 0.99 * last_change && PetscAbsReal(r->contact.load - last_load) < 0.1 * r->contact.change * PetscAbsReal(r->contact.load) &&
-        c->rho_scale > rho_floor) {
-      /* The reactions change as much as last time at an unchanged rho, yet their sum stays put: the
-         outer loop cycles (a node flipping in and out of the contact; at rho 100 on the h_tip 10
-         paper case, a 2-cycle at a change of 2.3e-5 with the load fixed to 7 digits, until the
-         50-iteration limit cut the step). A smaller rho damps the flip. A constant change with a
-         falling load is progress instead: a last reaction decaying geometrically as the contact
-         opens, which a smaller rho would only slow down. */
-      c->rho_scale *= 0.1;
-      grow_below  = PetscMin(grow_below, 0.1 * r->contact.change);
-      rho_changed = PETSC_TRUE;
-      if (c->monitor) PetscCall(PetscPrintf(c->comm, "    uzawa: reaction change stagnates, rho scale lowered to %g\n", (double)c->rho_scale));
-    } else if (augmented && r->contact.change < grow_below && c->rho_scale < c->rho_max) {
-      /* Once the contact state has settled (reactions within 1% of the last), Newton copes with a
-         larger rho, which speeds up the remaining outer iterations; before, a larger rho mostly
-         made Newton stall (Berkovich unloading: at every step). */
-      c->rho_scale = PetscMin(c->rho_max, 10.0 * c->rho_scale);
-      grown_at     = PetscMax(r->contact.change, PETSC_SMALL);
-      rho_changed  = PETSC_TRUE;
-    } else rho_changed = PETSC_FALSE;
+    if (c->variant == IND_UZAWA_NEWTON && its == 0) {
+      /* Newton met its tolerances without a step: another outer iteration would change nothing. */
+      PetscCall(PetscSNPrintf(r->why, sizeof(r->why), "contact: reaction change %.2e (-contact_uzawa_rtol %.1e), penetration %.2e nm (limit %.2e) at Newton's tolerances: tighten -snes_rtol or -snes_atol", (double)r->contact.change, (double)c->rtol, (double)r->contact.penetration, (double)c->pen_atol));
+      break;
+    }
     /* A growing change means rho is past the fixed point's stability limit: halve it, for good. */
     if (c->variant == IND_UZAWA_FIXED_POINT && r->contact.change > last_change) {
       c->rho_scale *= 0.5;
-      if (c->monitor) PetscCall(PetscPrintf(c->comm, "    uzawa: reaction change grew, rho halved (scale now %g)\n", (double)c->rho_scale));
+      if (c->monitor) PetscCall(PetscPrintf(c->comm, "    outer: reaction change grew, rho halved (scale now %g)\n", (double)c->rho_scale));
     }
     last_change = r->contact.change;
-    last_load   = r->contact.load;
   }
-  if (Usave) PetscCall(DMRestoreGlobalVector(s->dm, &Usave));
-  PetscCall(SNESSetTolerances(s->snes, atol, rtol, stol, maxit, maxf));
-  PetscCall(PetscSNPrintf(r->why, sizeof(r->why), "contact loop: %" PetscInt_FMT " outer iterations, reaction change %.2e (-contact_uzawa_rtol %.1e), penetration %.2e nm (limit %.2e)", c->max_outer, (double)r->contact.change, (double)c->rtol, (double)r->contact.penetration, (double)c->pen_atol));
+  if (c) {
+    PetscCall(SNESSetTolerances(s->snes, atol, rtol, stol, maxit, maxf));
+    PetscCall(DMRestoreGlobalVector(s->dm, &F));
+    if (!r->converged && r->reason > 0 && !r->why[0])
+      PetscCall(PetscSNPrintf(r->why, sizeof(r->why), "contact loop: %" PetscInt_FMT " outer iterations, reaction change %.2e (-contact_uzawa_rtol %.1e), penetration %.2e nm (limit %.2e)", c->max_outer, (double)r->contact.change, (double)c->rtol, (double)r->contact.penetration, (double)c->pen_atol));
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -290,6 +238,8 @@ PetscErrorCode IndSolverPredict(IndSolver s, PetscReal t_old, PetscReal t_new, V
   KSP                ksp;
   Vec                G, r, du;
   KSPConvergedReason reason;
+  PetscReal          gnorm;
+  PetscBool          ew;
 
   PetscFunctionBeginUser;
   PetscCall(IndBCSetUp(s->bc));
@@ -305,13 +255,27 @@ PetscErrorCode IndSolverPredict(IndSolver s, PetscReal t_old, PetscReal t_new, V
   PetscCall(IndAssemblyJacobian(s->assembly, s->Uloc, s->J));
   PetscCall(VecZeroEntries(G));
   PetscCall(IndBCApplySolution(s->bc, t_new - t_old, G));
+  PetscCall(VecNorm(G, NORM_INFINITY, &gnorm));
+  if (gnorm == 0) {
+    /* Nothing prescribed moves (an indenter alone): the tangent response is zero, and the solve
+       would only cost a preconditioner setup. */
+    PetscCall(DMRestoreGlobalVector(s->dm, &G));
+    PetscCall(DMRestoreGlobalVector(s->dm, &r));
+    PetscCall(DMRestoreGlobalVector(s->dm, &du));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
   PetscCall(MatMult(s->J, G, r));
   PetscCall(IndBCApplyJacobian(s->bc, s->J));
   PetscCall(IndBCApplySolution(s->bc, 0.0, r));
   PetscCall(VecScale(r, -1.0));
   PetscCall(SNESGetKSP(s->snes, &ksp));
   PetscCall(KSPSetOperators(ksp, s->J, s->J));
+  /* Eisenstat-Walker's tolerance hook reads the SNES's residual, which does not exist before its
+     first solve and is not this system's: off for this solve. */
+  PetscCall(SNESKSPGetUseEW(s->snes, &ew));
+  PetscCall(SNESKSPSetUseEW(s->snes, PETSC_FALSE));
   PetscCall(KSPSolve(ksp, r, du));
+  PetscCall(SNESKSPSetUseEW(s->snes, ew));
   PetscCall(KSPGetConvergedReason(ksp, &reason));
   /* A failed predictor only costs Newton iterations: fall back to the prescribed values alone. */
   if (reason > 0) PetscCall(VecAXPY(U, 1.0, du));

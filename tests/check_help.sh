@@ -13,7 +13,7 @@ if [ $status -ne 0 ]; then
   exit 1
 fi
 missing=""
-for opt in -mesh_file -film_young -load_depth -load_unload_steps -contact_friction -contact_rho_initial \
+for opt in -mesh_file -film_young -load_depth -load_unload_steps -contact_friction -contact_uzawa \
   -newton_stall_its -snes_rtol -output_fields -op_fraction; do
   grep -Eq -- "^ *$opt[ :]" <<<"$text" || missing="$missing $opt"
 done

@@ -37,7 +37,6 @@ INDENT_OPTIONS = [
     "-domain_model", "plastic", "-domain_yield", str(YIELD), "-domain_hardening", "linear", "-domain_hardening_slope", "0",
     "-bc_symmetry", "left,front", "-bc_fixed", "bottom",
     "-indenter_type", "cone", "-indenter_radius", "0", "-contact_friction", "0", "-load_unload", "0",
-    "-contact_rho_initial", "100", "-contact_uzawa_rtol", "1e-4", "-snes_atol", "1e-6",
     "-ksp_type", "preonly", "-pc_type", "lu", "-pc_factor_mat_solver_type", "mumps",
     "-output_fields", "0", "-quiet",
 ]

@@ -1,0 +1,207 @@
+#!/usr/bin/env python3
+"""Benchmark suite: runs named cases of indent and prints (and saves as CSV and a Markdown table) per
+case: dofs, ranks, load steps, Newton, outer and Krylov iterations (totals, per step, per Newton
+iteration), wall time per step, the split of the run from -log_view (residual, Jacobian with the
+return map, contact, preconditioner setup, Krylov, output) and the peak memory per rank and per dof.
+
+  scripts/bench.py                       # the default set (fits a 2-core machine in ~10 min)
+  scripts/bench.py --list                # every case with its size
+  scripts/bench.py paper_h6 sphere_100k  # chosen cases
+  scripts/bench.py --np 16 paper_h3      # a large case with more ranks (on a cluster node)
+  scripts/bench.py --extra "-ksp_type bcgs" paper_h15   # a variant: extra options for every case
+
+Not a test: it asserts nothing; doc/performance.md quotes its tables.
+"""
+import argparse
+import csv
+import os
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+
+TOP = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+
+PAPER = ["-options_file", "inputs/berkovich.opts"]
+SPHERE_BLOCK = ["-domain_young", "100", "-domain_poisson", "0.3", "-domain_model", "plastic", "-domain_hardening", "linear",
+                "-domain_yield", "1", "-domain_hardening_slope", "5", "-bc_fixed", "bottom", "-indenter_type", "sphere",
+                "-load_steps", "1", "-load_unload", "0", "-output_fields", "0"]
+
+
+def box(n, size=1000):
+    return ["-dm_plex_box_faces", f"{n},{n},{n}", "-dm_plex_box_lower", f"0,0,{-size}",
+            "-dm_plex_box_upper", f"{size},{size},0"]
+
+
+def sphere(n):
+    # A quarter of a sphere of radius 500 nm on the corner x = y = 0, 30 nm deep: symmetry planes
+    return box(n) + SPHERE_BLOCK + ["-indenter_radius", "500", "-load_depth", "30", "-bc_symmetry", "left,front"]
+
+
+def paper(h_tip, *extra):
+    return PAPER + ["-mesh_geo_parameters", f"h_tip={h_tip},h_far={max(250, 20 * h_tip)}"] + list(extra)
+
+
+def elastic(n):
+    return box(n) + ["-domain_young", "100", "-domain_poisson", "0.3", "-bc_fixed", "bottom",
+                     "-bc_displacement", "top:z=-10", "-output_fields", "0"]
+
+
+# name: (options, default ranks, in the default set, what it is)
+CASES = {
+    "elastic_20": (elastic(20), 2, True, "elastic Q1 box, one solve"),
+    "elastic_40": (elastic(40), 2, True, "elastic Q1 box, one solve"),
+    "elastic_64": (elastic(64), 2, False, "elastic Q1 box, one solve"),
+    "sphere_100k": (sphere(31), 1, True, "frictionless sphere into a plastic Q1 box, one load step"),
+    "sphere_800k": (sphere(63), 2, False, "frictionless sphere into a plastic Q1 box, one load step"),
+    "paper_h15": (paper(15), 2, True, "paper case, load and unload (README mesh)"),
+    "paper_h10": (paper(10), 2, True, "paper case, load and unload"),
+    "paper_h6": (paper(6), 2, False, "paper case, load and unload"),
+    "paper_h4": (paper(4), 2, False, "paper case, load and unload"),
+    "paper_h3": (paper(3), 2, False, "paper case, load and unload"),
+    "sharp_h15": (paper(15, "-indenter_radius", "0"), 2, True, "paper case, sharp Berkovich"),
+    "cube_corner_h15": (paper(15, "-indenter_type", "cube_corner", "-indenter_radius", "0", "-load_depth", "40"), 2, False,
+                        "paper film, sharp cube corner, 40 nm"),
+    "mu0_h15": (paper(15, "-contact_friction", "0"), 2, True, "paper case, frictionless"),
+    "mu05_h15": (paper(15, "-contact_friction", "0.5"), 2, True, "paper case, friction 0.5"),
+    "mu1_h15": (paper(15, "-contact_friction", "1"), 2, False, "paper case, friction 1.0"),
+}
+
+# -log_view events: what each column of the split sums
+SPLIT = {
+    "residual": ["IndResidual"],
+    "jacobian": ["IndJacobian"],
+    "contact": ["IndContact"],
+    "pc_setup": ["PCSetUp"],
+    "krylov": ["KSPSolve"],  # minus pc_setup below: KSPSolve includes the setups it triggers
+    "output": ["IndOutputWrite"],
+}
+
+
+def log_times(path):
+    """Max-over-ranks time of each event in a -log_view file (first occurrence: the summary over stages)."""
+    times = {}
+    with open(path) as f:
+        for line in f:
+            m = re.match(r"^(\w+)\s+(\d+)\s+[\d.]+\s+([\d.e+-]+)\s", line)
+            if m and m.group(1) not in times:
+                times[m.group(1)] = (int(m.group(2)), float(m.group(3)))
+    return times
+
+
+def run_case(name, opts, np, build, workdir, extra):
+    out = os.path.join(workdir, name)
+    shutil.rmtree(out, ignore_errors=True)
+    os.makedirs(out)
+    logv = os.path.join(out, "log_view.txt")
+    memf = os.path.join(out, "rss_rank%q{OMPI_COMM_WORLD_RANK}.txt")
+    cmd = ["mpiexec", "-n", str(np), "/usr/bin/time", "-f", "%M", "-o", memf,
+           os.path.join(build, "indent")] + opts + extra + ["-output_dir", out, "-log_view", ":" + logv]
+    t0 = time.time()
+    proc = subprocess.run(cmd, cwd=TOP, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    wall = time.time() - t0
+    with open(os.path.join(out, "stdout.txt"), "w") as f:
+        f.write(" ".join(cmd) + "\n" + proc.stdout)
+    row = {"case": name, "ranks": np, "ok": proc.returncode == 0, "wall_s": wall}
+    m = re.search(r"(\d+) dofs", proc.stdout)
+    row["dofs"] = int(m.group(1)) if m else 0
+    steps = re.findall(r"^step\s+\d+.*$", proc.stdout, re.M)
+    row["steps"] = len(steps)
+    row["cutbacks"] = len(re.findall(r"rejected", proc.stdout))
+    tot = {"newton": 0, "outer": 0, "linear": 0}
+    for s in steps:
+        for key, pat in (("newton", r"newton\s+(\d+)"), ("outer", r"uzawa\s+(\d+)"), ("linear", r"linear\s+(\d+)")):
+            mm = re.search(pat, s)
+            if mm:
+                tot[key] += int(mm.group(1))
+    if not tot["outer"]:
+        tot["outer"] = row["steps"]
+    row.update(tot)
+    times = log_times(logv) if os.path.exists(logv) else {}
+    for col, events in SPLIT.items():
+        row[col + "_s"] = sum(times.get(e, (0, 0.0))[1] for e in events)
+    row["krylov_s"] = max(0.0, row["krylov_s"] - row["pc_setup_s"])
+    row["pc_setups"] = times.get("PCSetUp", (0, 0))[0]
+    row["solve_s"] = times.get("SNESSolve", (0, 0.0))[1]
+    rss = []
+    for r in range(np):
+        p = os.path.join(out, f"rss_rank{r}.txt")
+        if os.path.exists(p):
+            with open(p) as f:
+                vals = [int(x) for x in f.read().split() if x.isdigit()]
+                if vals:
+                    rss.append(vals[-1])
+    row["peak_rss_mb"] = max(rss) / 1024 if rss else 0
+    row["bytes_per_dof"] = sum(rss) * 1024 / row["dofs"] if rss and row["dofs"] else 0
+    n = max(row["steps"], 1)
+    row["newton_per_step"] = row["newton"] / n
+    row["outer_per_step"] = row["outer"] / n
+    row["krylov_per_newton"] = row["linear"] / max(row["newton"], 1)
+    row["s_per_step"] = wall / n
+    row["s_per_newton"] = row["solve_s"] / max(row["newton"], 1)
+    return row
+
+
+COLUMNS = [("case", "case", "{}"), ("dofs", "dofs", "{:,}"), ("ranks", "ranks", "{}"), ("steps", "steps", "{}"),
+           ("cutbacks", "cut", "{}"), ("newton", "Newton", "{}"), ("newton_per_step", "/step", "{:.1f}"),
+           ("outer", "outer", "{}"), ("outer_per_step", "/step", "{:.2f}"), ("linear", "Krylov", "{}"),
+           ("krylov_per_newton", "/Newton", "{:.1f}"), ("wall_s", "wall s", "{:.1f}"), ("s_per_step", "s/step", "{:.2f}"),
+           ("residual_s", "resid s", "{:.1f}"), ("jacobian_s", "Jac s", "{:.1f}"), ("contact_s", "contact s", "{:.2f}"),
+           ("pc_setup_s", "PC setup s", "{:.1f}"), ("krylov_s", "Krylov s", "{:.1f}"), ("output_s", "output s", "{:.1f}"),
+           ("peak_rss_mb", "MB/rank", "{:.0f}"), ("bytes_per_dof", "B/dof", "{:.0f}"), ("ok", "ok", "{}")]
+
+
+def markdown(rows):
+    lines = ["| " + " | ".join(c[1] for c in COLUMNS) + " |", "|" + "---|" * len(COLUMNS)]
+    for r in rows:
+        lines.append("| " + " | ".join(fmt.format(r[key]) for key, _, fmt in COLUMNS) + " |")
+    return "\n".join(lines)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("cases", nargs="*", help="case names (default: the default set)")
+    ap.add_argument("--list", action="store_true", help="list the cases")
+    ap.add_argument("--np", type=int, help="ranks for every case (default: each case's own)")
+    ap.add_argument("--build", default=os.path.join(TOP, "build"), help="build directory with indent")
+    ap.add_argument("--extra", default="", help="extra indent options for every case")
+    ap.add_argument("--out", default=os.path.join(TOP, "bench-results"), help="directory for the CSV and Markdown table")
+    ap.add_argument("--keep", action="store_true", help="keep each run's output directory")
+    args = ap.parse_args()
+    if args.list:
+        for k, (o, np, dflt, what) in CASES.items():
+            print(f"{k:16s} {'default' if dflt else '       '}  {np} rank(s)  {what}")
+        return 0
+    names = args.cases or [k for k, v in CASES.items() if v[2]]
+    for n in names:
+        if n not in CASES:
+            sys.exit(f"bench.py: unknown case '{n}' (see --list)")
+    os.environ.update({"OMPI_ALLOW_RUN_AS_ROOT": "1", "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM": "1",
+                       "OMPI_MCA_rmaps_base_oversubscribe": "1", "OPENBLAS_NUM_THREADS": "1", "OMP_NUM_THREADS": "1"})
+    os.makedirs(args.out, exist_ok=True)
+    workdir = tempfile.mkdtemp(prefix="indent-bench-")
+    rows = []
+    for n in names:
+        opts, np, _, what = CASES[n]
+        row = run_case(n, opts, args.np or np, args.build, workdir, args.extra.split())
+        rows.append(row)
+        print(markdown([row]).splitlines()[-1] if len(rows) > 1 else markdown([row]), flush=True)
+    stamp = time.strftime("%Y%m%d-%H%M%S")
+    with open(os.path.join(args.out, f"bench-{stamp}.csv"), "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
+        w.writeheader()
+        w.writerows(rows)
+    with open(os.path.join(args.out, f"bench-{stamp}.md"), "w") as f:
+        f.write(markdown(rows) + "\n")
+    print(f"\nsaved {args.out}/bench-{stamp}.csv and .md" + ("" if args.keep else ""))
+    if args.keep:
+        print(f"run directories in {workdir}")
+    else:
+        shutil.rmtree(workdir, ignore_errors=True)
+    return 0 if all(r["ok"] for r in rows) else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())

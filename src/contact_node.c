@@ -1,0 +1,71 @@
+#include "contact_node.h"
+
+void IndContactNodeSolve(IndContact c, PetscInt i, const PetscScalar *u, const PetscReal Rv[3], IndContactNode *ns)
+{
+  const PetscReal *Uc = c->Uc + 3 * i;
+  PetscReal        x[3], du[3], dut[2], rl[3], tau[3], slip;
+
+  if (c->gap_current) {
+    for (int d = 0; d < 3; ++d) x[d] = c->X[3 * i + d] + PetscRealPart(u[d]);
+    IndIndenterGap(&c->indenter, x, &ns->gap, ns->n);
+    IndIndenterTangents(ns->n, ns->t1, ns->t2);
+  } else {
+    /* Small-deformation contact, as in Hertz's and Sneddon's solutions: the vertical distance from
+       the node, at its undeformed horizontal position moved by u_z, up to the indenter's surface;
+       the reaction is vertical and the tangents horizontal. */
+    PetscReal g0, g, n[3], sv = 0;
+    PetscBool hit = PETSC_FALSE;
+    for (int d = 0; d < 3; ++d) x[d] = c->X[3 * i + d] + (d == 2 ? PetscRealPart(u[d]) : 0.0);
+    IndIndenterGap(&c->indenter, x, &g0, n);
+    g = g0;
+    /* Newton along the vertical line; where it misses the indenter's underside (beside a sphere
+       or a punch) the node is far from contact, and the Euclidean gap, never larger, stands in. */
+    for (int it = 0; it < 50 && n[2] < -1e-3; ++it) {
+      const PetscReal ds = -g / n[2];
+      PetscReal       y[3] = {x[0], x[1], x[2] + sv + ds};
+      sv += ds;
+      IndIndenterGap(&c->indenter, y, &g, n);
+      if (PetscAbsReal(ds) <= 1e-12 * (1 + PetscAbsReal(sv))) {
+        hit = n[2] < -1e-3 ? PETSC_TRUE : PETSC_FALSE;
+        break;
+      }
+    }
+    if (!hit) sv = g0;
+    ns->gap = sv;
+    ns->n[0] = ns->n[1] = 0, ns->n[2] = -1;
+    ns->t1[0] = 1, ns->t1[1] = ns->t1[2] = 0;
+    ns->t2[1] = 1, ns->t2[0] = ns->t2[2] = 0;
+  }
+  /* slip relative to the indenter, which moved down by the change of depth over the step */
+  for (int d = 0; d < 3; ++d) du[d] = PetscRealPart(u[d]) - Uc[d];
+  du[2] += c->indenter.depth - c->depth_c;
+  dut[0] = du[0] * ns->t1[0] + du[1] * ns->t1[1] + du[2] * ns->t1[2];
+  dut[1] = du[0] * ns->t2[0] + du[1] * ns->t2[1] + du[2] * ns->t2[2];
+  slip   = PetscSqrtReal(dut[0] * dut[0] + dut[1] * dut[1]);
+  ns->s[0] = slip > 0 ? dut[0] / slip : 0;
+  ns->s[1] = slip > 0 ? dut[1] / slip : 0;
+  rl[0] = Rv[0] * ns->n[0] + Rv[1] * ns->n[1] + Rv[2] * ns->n[2];
+  rl[1] = Rv[0] * ns->t1[0] + Rv[1] * ns->t1[1] + Rv[2] * ns->t1[2];
+  rl[2] = Rv[0] * ns->t2[0] + Rv[1] * ns->t2[1] + Rv[2] * ns->t2[2];
+  IndBipotentialPredictor(c->mu, c->rho_scale * c->kdiag[i], rl, ns->gap, dut, tau);
+  ns->status = IndBipotentialProject(c->mu, tau, ns->r, ns->D);
+  for (int d = 0; d < 3; ++d) ns->f[d] = ns->r[0] * ns->n[d] + ns->r[1] * ns->t1[d] + ns->r[2] * ns->t2[d];
+}
+
+void IndContactNodeStiffness(IndContact c, PetscInt i, const PetscScalar *u, const PetscReal R[3], PetscReal B[9])
+{
+  PetscReal h = 0;
+
+  for (int d = 0; d < 3; ++d) h = PetscMax(h, PetscAbsReal(c->X[3 * i + d] + PetscRealPart(u[d])));
+  h = 1e-6 * (1 + h);
+  for (int b = 0; b < 3; ++b) {
+    PetscScalar    up[3], um[3];
+    IndContactNode np, nm;
+    for (int d = 0; d < 3; ++d) up[d] = um[d] = u[d];
+    up[b] += h;
+    um[b] -= h;
+    IndContactNodeSolve(c, i, up, R, &np);
+    IndContactNodeSolve(c, i, um, R, &nm);
+    for (int a = 0; a < 3; ++a) B[3 * a + b] = -(np.f[a] - nm.f[a]) / (2 * h);
+  }
+}
