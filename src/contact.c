@@ -369,8 +369,11 @@ PetscErrorCode IndContactUpdate(IndContact c, Vec U, IndContactSummary *sum)
     IndContactNode ns;
     IndContactNodeSolve(c, i, u + c->row[i], Multiplier(c, i), &ns);
     for (int d = 0; d < 3; ++d) {
-      red[0] += PetscSqr(ns.f[d] - Multiplier(c, i)[d]);
-      red[1] += PetscSqr(ns.f[d]);
+      /* A component held by a boundary condition is the support's (Newton leaves its multiplier 0) */
+      if (!(c->variant == IND_UZAWA_NEWTON && c->fixed[i] & (1 << d))) {
+        red[0] += PetscSqr(ns.f[d] - Multiplier(c, i)[d]);
+        red[1] += PetscSqr(ns.f[d]);
+      }
       c->R[3 * i + d] = ns.f[d];
     }
     red[2] -= ns.f[2];

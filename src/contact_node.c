@@ -8,6 +8,19 @@ void IndContactNodeSolve(IndContact c, PetscInt i, const PetscScalar *u, const P
   if (c->gap_current) {
     for (int d = 0; d < 3; ++d) x[d] = c->X[3 * i + d] + PetscRealPart(u[d]);
     IndIndenterGap(&c->indenter, x, &ns->gap, ns->n);
+    if (c->fixed && c->fixed[i]) {
+      /* A node on a symmetry plane pushes the indenter only within the plane: the mirror image of
+         the indenter pushes back the other half. Where the nearest point is not unique (a node on
+         the axis of a quarter model, inside a sharp tip) the distance's gradient can point out of
+         the plane; its projection on the free directions is the symmetric one. */
+      PetscReal nn = 0;
+      for (int d = 0; d < 3; ++d) {
+        if (c->fixed[i] & (1 << d)) ns->n[d] = 0;
+        nn += ns->n[d] * ns->n[d];
+      }
+      if (nn > 0) for (int d = 0; d < 3; ++d) ns->n[d] /= PetscSqrtReal(nn);
+      else IndIndenterGap(&c->indenter, x, &ns->gap, ns->n);
+    }
     IndIndenterTangents(ns->n, ns->t1, ns->t2);
   } else {
     /* Small-deformation contact, as in Hertz's and Sneddon's solutions: the vertical distance from

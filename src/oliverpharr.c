@@ -73,8 +73,10 @@ int IndOliverPharr(const PetscReal *h, const PetscReal *P, PetscInt n, const Ind
   hsel = (PetscReal *)malloc(2 * (size_t)(n - imax) * sizeof(PetscReal));
   if (!hsel) return 3;
   Psel = hsel + (n - imax);
+  /* A load below 1e-12 P_max is zero to any solver tolerance (a node left touching at round-off
+     force when the indenter is back at the surface): it carries no unloading data. */
   for (PetscInt i = imax; i < n; ++i)
-    if (P[i] >= (1 - p->fraction) * r->P_max && P[i] > 0) {
+    if (P[i] >= (1 - p->fraction) * r->P_max && P[i] > 1e-12 * r->P_max) {
       hsel[k] = h[i];
       Psel[k] = P[i];
       hmin     = PetscMin(hmin, h[i]);
