@@ -6,6 +6,7 @@
 #include "ind_disc.h"
 #include "ind_material.h"
 #include "ind_history.h"
+#include "ind_matinsert.h"
 
 /* A vector field of position, e.g. a body force (nN/nm^3) or a boundary displacement (nm). */
 typedef PetscErrorCode (*IndVectorFn)(const PetscReal x[3], PetscReal v[3], void *ctx);
@@ -24,6 +25,8 @@ struct _p_IndAssembly {
   PetscInt     nfailed;  /* local quadrature points whose return map failed, last residual */
   PetscInt     nplastic; /* local quadrature points yielding (dp > 0), last residual */
   PetscReal   *ue, *fe, *Ke, *G, *DB; /* per-cell work arrays, allocated once */
+  Mat          J;      /* the matrix made by IndAssemblyCreateMatrix (borrowed) */
+  IndMatInsert insert; /* and its cached insertion (NULL: MatSetValues) */
 };
 
 /* Per local cell, volume averages over the committed history (after IndHistoryCommit). */

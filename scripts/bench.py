@@ -69,26 +69,31 @@ CASES = {
     "mu1_h15": (paper(15, "-contact_friction", "1"), 2, False, "paper case, friction 1.0"),
 }
 
-# -log_view events: what each column of the split sums
+# The split of the run from -log_view's nested (flame graph) output of rank 0: a column's time is
+# the self time of every stack through any of its frames, so nested events count once.
 SPLIT = {
-    "residual": ["IndResidual"],
-    "jacobian": ["IndJacobian"],
-    "contact": ["IndContact"],
-    "pc_setup": ["PCSetUp"],
-    "krylov": ["KSPSolve"],  # minus pc_setup below: KSPSolve includes the setups it triggers
-    "output": ["IndOutputWrite"],
+    "residual": (["IndResidual"], []),
+    "jacobian": (["IndJacobian"], []),
+    "contact": (["IndContact"], []),
+    "pc_setup": (["PCSetUp"], []),
+    "krylov": (["KSPSolve"], ["PCSetUp"]),
+    "output": (["IndOutputWrite"], []),
+    "solve": (["SNESSolve"], []),
 }
 
 
-def log_times(path):
-    """Max-over-ranks time of each event in a -log_view file (first occurrence: the summary over stages)."""
-    times = {}
+def log_split(path):
+    stacks = []
     with open(path) as f:
         for line in f:
-            m = re.match(r"^(\w+)\s+(\d+)\s+[\d.]+\s+([\d.e+-]+)\s", line)
-            if m and m.group(1) not in times:
-                times[m.group(1)] = (int(m.group(2)), float(m.group(3)))
-    return times
+            parts = line.rsplit(" ", 1)
+            if len(parts) == 2 and parts[1].strip().isdigit():
+                stacks.append((parts[0].split(";"), int(parts[1]) * 1e-6))
+    split = {}
+    for col, (incl, excl) in SPLIT.items():
+        split[col] = sum(t for frames, t in stacks
+                         if any(e in frames for e in incl) and not any(e in frames for e in excl))
+    return split
 
 
 def run_case(name, opts, np, build, workdir, extra):
@@ -96,9 +101,10 @@ def run_case(name, opts, np, build, workdir, extra):
     shutil.rmtree(out, ignore_errors=True)
     os.makedirs(out)
     logv = os.path.join(out, "log_view.txt")
-    memf = os.path.join(out, "rss_rank%q{OMPI_COMM_WORLD_RANK}.txt")
-    cmd = ["mpiexec", "-n", str(np), "/usr/bin/time", "-f", "%M", "-o", memf,
-           os.path.join(build, "indent")] + opts + extra + ["-output_dir", out, "-log_view", ":" + logv]
+    # each rank's peak resident memory (kB), from the kernel's accounting of the finished process
+    rss = 'exec /usr/bin/time -f %M -o "$0/rss_rank$OMPI_COMM_WORLD_RANK.txt" "$@"'
+    cmd = ["mpiexec", "-n", str(np), "sh", "-c", rss, out,
+           os.path.join(build, "indent")] + opts + extra + ["-output_dir", out, "-log_view", ":" + logv + ":ascii_flamegraph"]
     t0 = time.time()
     proc = subprocess.run(cmd, cwd=TOP, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
     wall = time.time() - t0
@@ -119,12 +125,9 @@ def run_case(name, opts, np, build, workdir, extra):
     if not tot["outer"]:
         tot["outer"] = row["steps"]
     row.update(tot)
-    times = log_times(logv) if os.path.exists(logv) else {}
-    for col, events in SPLIT.items():
-        row[col + "_s"] = sum(times.get(e, (0, 0.0))[1] for e in events)
-    row["krylov_s"] = max(0.0, row["krylov_s"] - row["pc_setup_s"])
-    row["pc_setups"] = times.get("PCSetUp", (0, 0))[0]
-    row["solve_s"] = times.get("SNESSolve", (0, 0.0))[1]
+    split = log_split(logv) if os.path.exists(logv) else {}
+    for col in SPLIT:
+        row[col + "_s"] = split.get(col, 0.0)
     rss = []
     for r in range(np):
         p = os.path.join(out, f"rss_rank{r}.txt")
@@ -141,6 +144,8 @@ def run_case(name, opts, np, build, workdir, extra):
     row["krylov_per_newton"] = row["linear"] / max(row["newton"], 1)
     row["s_per_step"] = wall / n
     row["s_per_newton"] = row["solve_s"] / max(row["newton"], 1)
+    row["jacobian_per_newton_ms"] = 1e3 * row["jacobian_s"] / max(row["newton"], 1)
+    row["linear_per_newton_ms"] = 1e3 * (row["pc_setup_s"] + row["krylov_s"]) / max(row["newton"], 1)
     return row
 
 
@@ -148,8 +153,10 @@ COLUMNS = [("case", "case", "{}"), ("dofs", "dofs", "{:,}"), ("ranks", "ranks", 
            ("cutbacks", "cut", "{}"), ("newton", "Newton", "{}"), ("newton_per_step", "/step", "{:.1f}"),
            ("outer", "outer", "{}"), ("outer_per_step", "/step", "{:.2f}"), ("linear", "Krylov", "{}"),
            ("krylov_per_newton", "/Newton", "{:.1f}"), ("wall_s", "wall s", "{:.1f}"), ("s_per_step", "s/step", "{:.2f}"),
-           ("residual_s", "resid s", "{:.1f}"), ("jacobian_s", "Jac s", "{:.1f}"), ("contact_s", "contact s", "{:.2f}"),
+           ("solve_s", "solve s", "{:.1f}"), ("residual_s", "resid s", "{:.2f}"), ("jacobian_s", "Jac s", "{:.2f}"),
+           ("contact_s", "contact s", "{:.2f}"),
            ("pc_setup_s", "PC setup s", "{:.1f}"), ("krylov_s", "Krylov s", "{:.1f}"), ("output_s", "output s", "{:.1f}"),
+           ("jacobian_per_newton_ms", "Jac ms/Newton", "{:.1f}"), ("linear_per_newton_ms", "solve ms/Newton", "{:.1f}"),
            ("peak_rss_mb", "MB/rank", "{:.0f}"), ("bytes_per_dof", "B/dof", "{:.0f}"), ("ok", "ok", "{}")]
 
 

@@ -27,6 +27,7 @@ PetscErrorCode IndAssemblyDestroy(IndAssembly *a)
   PetscFunctionBeginUser;
   if (!*a) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(PetscFree5((*a)->ue, (*a)->fe, (*a)->Ke, (*a)->G, (*a)->DB));
+  PetscCall(IndMatInsertDestroy(&(*a)->insert));
   PetscCall(PetscFree(*a));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -156,8 +157,11 @@ PetscErrorCode IndAssemblyJacobian(IndAssembly a, Vec Uloc, Mat J)
   const PetscScalar *u, *hold;
 
   PetscFunctionBeginUser;
+  IndMatInsert       ins = J == a->J ? a->insert : NULL;
+
   PetscCall(PetscLogEventBegin(IndLog.jacobian, 0, 0, 0, 0));
-  PetscCall(MatZeroEntries(J));
+  if (ins) PetscCall(IndMatInsertBegin(ins, J));
+  else PetscCall(MatZeroEntries(J));
   PetscCall(VecGetArrayRead(Uloc, &u));
   PetscCall(VecGetArrayRead(a->history->committed, &hold));
   for (PetscInt i = 0; i < disc->ncell; ++i) {
@@ -175,12 +179,16 @@ PetscErrorCode IndAssemblyJacobian(IndAssembly a, Vec Uloc, Mat J)
       (void)MaterialResponse(m, a->tangent, eps, hold + i * stride + q * IND_HISTORY_NVAL, NULL, s, D, &dp);
       AddBtDB(nb, a->G, D, disc->wdetJ[i * nq + q], a->DB, a->Ke);
     }
-    PetscCall(MatSetValues(J, nd, g, nd, g, a->Ke, ADD_VALUES));
+    if (ins) PetscCall(IndMatInsertCell(ins, J, i, a->Ke));
+    else PetscCall(MatSetValues(J, nd, g, nd, g, a->Ke, ADD_VALUES));
   }
   PetscCall(VecRestoreArrayRead(a->history->committed, &hold));
   PetscCall(VecRestoreArrayRead(Uloc, &u));
-  PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
-  PetscCall(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));
+  if (ins) PetscCall(IndMatInsertEnd(ins, J));
+  else {
+    PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
+    PetscCall(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));
+  }
   PetscCall(PetscLogFlops(disc->ncell * nq * (6.0 * nd * nd + 36.0 * nd)));
   PetscCall(PetscLogEventEnd(IndLog.jacobian, 0, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -220,6 +228,19 @@ PetscErrorCode IndAssemblyCreateMatrix(IndAssembly a, Mat *J)
   PetscCall(MatPreallocatorPreallocate(P, PETSC_TRUE, *J));
   PetscCall(MatDestroy(&P));
   PetscCall(MatSetOption(*J, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_TRUE));
+  /* Every assembly sends the same (subset of) off-process entries, and conditions and contact only
+     touch owned rows: the communication pattern is built once. */
+  PetscCall(MatSetOption(*J, MAT_SUBSET_OFF_PROC_ENTRIES, PETSC_TRUE));
+  PetscCall(MatSetOption(*J, MAT_NO_OFF_PROC_ZERO_ROWS, PETSC_TRUE));
+  {
+    PetscBool cached = PETSC_TRUE;
+    PetscOptionsBegin(comm, NULL, "Jacobian assembly", "Assembly");
+    PetscCall(PetscOptionsBool("-jac_cached_insert", "Add element matrices at cached positions (false: MatSetValues)", "", cached, &cached, NULL));
+    PetscOptionsEnd();
+    PetscCall(IndMatInsertDestroy(&a->insert));
+    a->J = *J;
+    if (cached) PetscCall(IndMatInsertCreate(disc, *J, &a->insert));
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
