@@ -40,6 +40,7 @@ struct _p_IndContact {
   PetscReal   mu;        /* Coulomb friction coefficient */
   PetscBool   gap_current; /* gap at X + u (default), or at the undeformed horizontal position */
   PetscReal   rho_scale; /* rho = rho_scale * mean stiffness diagonal of the node */
+  PetscReal   rounding;  /* -indenter_sharp_rounding, nm (-1: 1e-4 of the largest depth) */
   PetscReal   rtol;      /* outer loop: relative change of the reactions */
   PetscReal   pen_rtol;  /* outer loop: largest penetration, relative to the largest depth */
   PetscReal   pen_atol;  /* the same in nm, computed at setup */

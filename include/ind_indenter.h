@@ -30,6 +30,11 @@ extern const char *const IndIndenterTypes[];
 typedef struct {
   IndIndenterType type;
   PetscReal       radius;   /* sphere or tip radius (nm), 0 for sharp; punch radius */
+  /* The gap of a sharp (radius 0) cone or pyramid is that of the shape rounded by this (nm; 0: exactly
+     sharp). Inside a sharp core the nearest face jumps across its edges and apex, so a node pressed
+     onto the apex has no position where its single normal balances it and Newton flips it from face
+     to face; rounded, the normal turns continuously. The area function stays the sharp one. */
+  PetscReal       rounding;
   PetscReal       angle;    /* cone half-angle or pyramid face-to-axis angle, radians */
   PetscReal       rotation; /* pyramids: azimuth of the first face's outward normal, radians */
   PetscReal       axis[2];  /* x, y of the axis, nm */

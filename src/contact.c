@@ -183,7 +183,7 @@ PetscErrorCode IndContactCreate(IndMesh mesh, IndDisc disc, IndBC bc, IndContact
   IndContact         c;
   MPI_Comm           comm = PetscObjectComm((PetscObject)mesh->dm);
   IndIndenter        ind;
-  PetscBool          has_type, has_radius, has_surface, has_sym, has_axis;
+  PetscBool          has_type, has_radius, has_surface, has_sym, has_axis, has_rounding;
   PetscReal          angle = 0, rotation = 0, radius = 0, symmetry = 0;
   PetscInt           naxis = 2;
   char               surface[IND_NAME_LEN] = "top";
@@ -206,6 +206,7 @@ PetscErrorCode IndContactCreate(IndMesh mesh, IndDisc disc, IndBC bc, IndContact
   c->pen_rtol  = 1e-4;
   c->monitor   = PETSC_FALSE;
   PetscOptionsBegin(comm, NULL, "Rigid indenter and contact", "Contact");
+  PetscCall(PetscOptionsReal("-indenter_sharp_rounding", "Sharp cones and pyramids: the contact sees them rounded by this radius (nm; default 1e-4 of -load_depth; 0: exactly sharp)", "", c->rounding, &c->rounding, &has_rounding));
   PetscCall(PetscOptionsReal("-indenter_radius", "Sphere, tip (cone, pyramids; 0 sharp) or punch radius (nm)", "", radius, &radius, &has_radius));
   PetscCall(PetscOptionsReal("-indenter_angle", "Cone half-angle or pyramid face-to-axis angle (degrees; 0: the standard one)", "", angle, &angle, NULL));
   PetscCall(PetscOptionsReal("-indenter_rotation", "Pyramids: azimuth of the first face's normal (degrees)", "", rotation, &rotation, NULL));
@@ -240,6 +241,8 @@ PetscErrorCode IndContactCreate(IndMesh mesh, IndDisc disc, IndBC bc, IndContact
   PetscCheck(angle >= 0 && angle < 90, comm, PETSC_ERR_ARG_OUTOFRANGE, "-indenter_angle must lie in (0, 90) degrees (0: the standard angle), got %g", (double)angle);
   PetscCheck(!IndIndenterSetUp(&ind), comm, PETSC_ERR_ARG_OUTOFRANGE, "-indenter_type %s: bad -indenter_radius or -indenter_angle", IndIndenterTypes[ind.type]);
   PetscCheck(!has_axis || naxis == 2, comm, PETSC_ERR_ARG_WRONG, "-indenter_axis needs two values x,y");
+  PetscCheck(!has_rounding || c->rounding >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-indenter_sharp_rounding must be >= 0 (nm), got %g", (double)c->rounding);
+  if (!has_rounding) c->rounding = -1; /* set from the depth at setup */
   PetscCheck(c->mu >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-contact_friction must be >= 0, got %g", (double)c->mu);
   PetscCheck(c->rho_scale > 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-contact_rho_scale must be > 0, got %g", (double)c->rho_scale);
   PetscCheck(c->rtol > 0 && c->pen_rtol > 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-contact_uzawa_rtol and -contact_penetration_rtol must be > 0");
@@ -323,6 +326,7 @@ PetscErrorCode IndContactSetUp(IndContact c, IndBC bc, Mat K, PetscReal depth_ma
   PetscCall(VecRestoreArray(d, &m));
   PetscCall(VecDestroy(&d));
   c->pen_atol = c->pen_rtol * depth_max;
+  c->indenter.rounding = c->rounding >= 0 ? c->rounding : 1e-4 * depth_max;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

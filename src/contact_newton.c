@@ -95,7 +95,7 @@ PetscErrorCode IndContactNewtonJacobian(IndContact c, Vec U, Mat J)
     IndContactNodeSolve(c, i, u + c->row[i], c->L + 3 * i, &ns);
     if (ns.status == IND_CONTACT_OPEN) continue; /* D = 0: the equilibrium rows stand */
     Projector(&ns, P);
-    IndContactNodeStiffness(c, i, u + c->row[i], c->L + 3 * i, B);
+    (void)IndContactNodeStiffness(c, i, u + c->row[i], c->L + 3 * i, B);
     /* The three rows of a node share their columns (every component of a node couples to every
        component of its neighbours). */
     for (int a = 0; a < 3; ++a) {

@@ -65,12 +65,38 @@ void IndContactNodeSolve(IndContact c, PetscInt i, const PetscScalar *u, const P
   for (int d = 0; d < 3; ++d) ns->f[d] = ns->r[0] * ns->n[d] + ns->r[1] * ns->t1[d] + ns->r[2] * ns->t2[d];
 }
 
-void IndContactNodeStiffness(IndContact c, PetscInt i, const PetscScalar *u, const PetscReal R[3], PetscReal B[9])
+/* rho Q D G: the derivative with the frame held fixed. */
+static void FrozenFrameStiffness(PetscReal mu, PetscReal rho, const IndContactNode *ns, PetscReal B[9])
 {
-  PetscReal h = 0;
+  PetscReal Q[3][3], G[3][3], QD[3][3];
+
+  for (int d = 0; d < 3; ++d) {
+    Q[d][0] = ns->n[d], Q[d][1] = ns->t1[d], Q[d][2] = ns->t2[d];
+    G[0][d] = ns->n[d] + mu * (ns->s[0] * ns->t1[d] + ns->s[1] * ns->t2[d]);
+    G[1][d] = ns->t1[d];
+    G[2][d] = ns->t2[d];
+  }
+  for (int a = 0; a < 3; ++a)
+    for (int b = 0; b < 3; ++b) {
+      QD[a][b] = 0;
+      for (int k = 0; k < 3; ++k) QD[a][b] += Q[a][k] * ns->D[3 * k + b];
+    }
+  for (int a = 0; a < 3; ++a)
+    for (int b = 0; b < 3; ++b) {
+      B[3 * a + b] = 0;
+      for (int k = 0; k < 3; ++k) B[3 * a + b] += rho * QD[a][k] * G[k][b];
+    }
+}
+
+PetscBool IndContactNodeStiffness(IndContact c, PetscInt i, const PetscScalar *u, const PetscReal R[3], PetscReal B[9])
+{
+  const PetscReal rho = c->rho_scale * c->kdiag[i];
+  PetscReal       h   = 0;
+  IndContactNode  n0;
 
   for (int d = 0; d < 3; ++d) h = PetscMax(h, PetscAbsReal(c->X[3 * i + d] + PetscRealPart(u[d])));
   h = 1e-6 * (1 + h);
+  IndContactNodeSolve(c, i, u, R, &n0);
   for (int b = 0; b < 3; ++b) {
     PetscScalar    up[3], um[3];
     IndContactNode np, nm;
@@ -79,6 +105,18 @@ void IndContactNodeStiffness(IndContact c, PetscInt i, const PetscScalar *u, con
     um[b] -= h;
     IndContactNodeSolve(c, i, up, R, &np);
     IndContactNodeSolve(c, i, um, R, &nm);
-    for (int a = 0; a < 3; ++a) B[3 * a + b] = -(np.f[a] - nm.f[a]) / (2 * h);
+    for (int a = 0; a < 3; ++a) {
+      const PetscReal fwd = (np.f[a] - n0.f[a]) / h, bwd = (n0.f[a] - nm.f[a]) / h;
+      /* One-sided differences that disagree (at the scale of rho) straddle a kink: an edge or the apex
+         of a sharp shape, or a change of status. There is no derivative to take; the frozen frame's
+         is an element of the generalized one, and the central difference (the turning normal) would
+         be 1/h large. */
+      if (PetscAbsReal(fwd - bwd) > 1e-3 * rho) {
+        FrozenFrameStiffness(c->mu, rho, &n0, B);
+        return PETSC_FALSE;
+      }
+      B[3 * a + b] = -0.5 * (fwd + bwd);
+    }
   }
+  return PETSC_TRUE;
 }

@@ -15,5 +15,7 @@ void IndContactNodeSolve(IndContact contact, PetscInt i, const PetscScalar *u, c
 /* B = -d f / d u of node i at u for the fixed reaction R (3x3, row-major, global axes), by central
    differences: it carries the rotation of the frame with the node (the curvature of the indenter's
    surface), which the projection's derivative D leaves out, so that Newton stays quadratic on a
-   rounded tip. Without that rotation it would be rho Q D G, G's rows n + mu (s1 t1 + s2 t2), t1, t2. */
-void IndContactNodeStiffness(IndContact contact, PetscInt i, const PetscScalar *u, const PetscReal R[3], PetscReal B[9]);
+   rounded tip. Where the one-sided differences disagree (a kink: a sharp edge or apex, a change of
+   status) it is rho Q D G instead, the frame held fixed (G's rows n + mu (s1 t1 + s2 t2), t1, t2),
+   and the return value is PETSC_FALSE. */
+PetscBool IndContactNodeStiffness(IndContact contact, PetscInt i, const PetscScalar *u, const PetscReal R[3], PetscReal B[9]);

@@ -162,6 +162,8 @@ static void FlatPunch(const IndIndenter *ind, const PetscReal y[3], PetscReal *d
 void IndIndenterGap(const IndIndenter *ind, const PetscReal x[3], PetscReal *gap, PetscReal n[3])
 {
   const PetscReal lowest = ind->surface - ind->depth;
+  /* A sharp shape's contact sees it rounded by `rounding` (see the header) */
+  const PetscReal radius = ind->radius > 0 || ind->type == IND_INDENTER_SPHERE ? ind->radius : ind->rounding;
   PetscReal       y[3], d;
 
   if (ind->type == IND_INDENTER_FLAT) {
@@ -174,7 +176,7 @@ void IndIndenterGap(const IndIndenter *ind, const PetscReal x[3], PetscReal *gap
   /* Relative to the core's apex, tip_radius above the lowest point. */
   y[0] = x[0] - ind->axis[0];
   y[1] = x[1] - ind->axis[1];
-  y[2] = x[2] - (lowest + ind->radius);
+  y[2] = x[2] - (lowest + radius);
   switch (ind->type) {
   case IND_INDENTER_SPHERE:
     d = PetscSqrtReal(Dot(y, y));
@@ -188,7 +190,7 @@ void IndIndenterGap(const IndIndenter *ind, const PetscReal x[3], PetscReal *gap
   default:
     PyramidCore(ind, y, &d, n);
   }
-  *gap = d - ind->radius;
+  *gap = d - radius;
 }
 
 void IndIndenterTangents(const PetscReal n[3], PetscReal t1[3], PetscReal t2[3])

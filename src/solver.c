@@ -119,6 +119,10 @@ PetscErrorCode IndSolverCreate(DM dm, IndAssembly assembly, IndBC bc, IndContact
      per Newton iteration); 1e-4 and Eisenstat-Walker cost more Newton iterations than they saved
      (doc/performance.md). */
   PetscCall(KSPSetTolerances(ksp, 1e-5, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT));
+  /* The preconditioner of every other Newton iteration serves the next one too: the contact rows
+     and plastic tangents change little between them. Sphere into a plastic block (98k dofs, 1 rank):
+     PC setup 3.6 to 2.4 s, Krylov iterations 85 to 92, Newton unchanged. */
+  PetscCall(SNESSetLagPreconditioner(s->snes, 2));
   PetscCall(KSPGetPC(ksp, &pc));
   PetscCall(PCSetType(pc, PCGAMG));
   /* The graph and prolongator of GAMG dominate its setup; the mesh does not change between Newton

@@ -211,6 +211,34 @@ static void CheckOneNodeNewton(void)
   Report("one node onto a punch: Newton steps (at most 2)", (PetscReal)worst_its, 2);
 }
 
+/* The stiffness's decision: central differences (the frame turning with the node) on a smooth
+   surface; at a kink (a node on the axis inside a sharp pyramid, where the nearest face jumps) the
+   frame held fixed, rho Q D G. */
+static void CheckKinkDecision(void)
+{
+  struct _p_IndContact c;
+  PetscReal            X[3] = {0, 0, 0}, Uc[3] = {0, 0, 0}, kdiag = 50, B[9], worst = 0;
+  const PetscReal      L[3] = {0, 0, -100};
+  PetscScalar          u[3] = {0, 0, 0};
+  PetscBool            smooth;
+  IndContactNode       ns;
+
+  MakeNode(IND_INDENTER_BERKOVICH, 0, 0.0, &c, X, Uc, &kdiag); /* apex 10 below the surface: deep */
+  smooth = IndContactNodeStiffness(&c, 0, u, L, B);
+  IndContactNodeSolve(&c, 0, u, L, &ns);
+  for (int a = 0; a < 3; ++a)
+    for (int b = 0; b < 3; ++b) {
+      PetscReal expect = 0; /* frictionless sliding: D = e0 e0^T, so rho n n^T */
+      expect = c.rho_scale * kdiag * ns.n[a] * ns.n[b] * ns.D[0];
+      worst  = PetscMax(worst, PetscAbsReal(B[3 * a + b] - expect));
+    }
+  Report("apex of a sharp Berkovich: kink found, frame held (|B - rho n n^T|)", smooth ? 1.0 : worst, 1e-10);
+  MakeNode(IND_INDENTER_SPHERE, 30, 0.0, &c, X, Uc, &kdiag);
+  X[0] = 3;
+  smooth = IndContactNodeStiffness(&c, 0, u, L, B);
+  Report("inside a sphere: no kink, central differences", smooth ? 0.0 : 1.0, 0);
+}
+
 int main(int argc, char **argv)
 {
   PetscFunctionBeginUser;
@@ -220,6 +248,7 @@ int main(int argc, char **argv)
   CheckNodeDerivative("berkovich R = 5, mu = 0.5", IND_INDENTER_BERKOVICH, 5, 0.5);
   CheckNodeDerivative("cone R = 0 (sharp), frictionless", IND_INDENTER_CONE, 0, 0.0);
   CheckOneNodeNewton();
+  CheckKinkDecision();
   printf("%s: %d failure(s)\n", failures ? "FAILED" : "passed", (int)failures);
   PetscCall(PetscFinalize());
   return failures ? 1 : 0;
