@@ -14,6 +14,7 @@ Not a test: it asserts nothing; doc/performance.md quotes its tables.
 """
 import argparse
 import csv
+import json
 import os
 import re
 import shutil
@@ -128,6 +129,16 @@ def run_case(name, opts, np, build, workdir, extra):
     split = log_split(logv) if os.path.exists(logv) else {}
     for col in SPLIT:
         row[col + "_s"] = split.get(col, 0.0)
+    # the answer, to compare variants and meshes
+    row["P_max_uN"] = row["H_GPa"] = row["E_r_GPa"] = float("nan")
+    try:
+        with open(os.path.join(out, "summary.json")) as f:
+            summ = json.load(f)
+        row["P_max_uN"] = summ.get("P_max_uN", float("nan"))
+        row["H_GPa"] = summ.get("H_GPa", float("nan"))
+        row["E_r_GPa"] = summ.get("E_r_GPa", float("nan"))
+    except (OSError, ValueError):
+        pass
     rss = []
     for r in range(np):
         p = os.path.join(out, f"rss_rank{r}.txt")
@@ -157,7 +168,8 @@ COLUMNS = [("case", "case", "{}"), ("dofs", "dofs", "{:,}"), ("ranks", "ranks", 
            ("contact_s", "contact s", "{:.2f}"),
            ("pc_setup_s", "PC setup s", "{:.1f}"), ("krylov_s", "Krylov s", "{:.1f}"), ("output_s", "output s", "{:.1f}"),
            ("jacobian_per_newton_ms", "Jac ms/Newton", "{:.1f}"), ("linear_per_newton_ms", "solve ms/Newton", "{:.1f}"),
-           ("peak_rss_mb", "MB/rank", "{:.0f}"), ("bytes_per_dof", "B/dof", "{:.0f}"), ("ok", "ok", "{}")]
+           ("peak_rss_mb", "MB/rank", "{:.0f}"), ("bytes_per_dof", "B/dof", "{:.0f}"),
+           ("P_max_uN", "P_max uN", "{:.2f}"), ("H_GPa", "H GPa", "{:.4f}"), ("E_r_GPa", "E_r GPa", "{:.2f}"), ("ok", "ok", "{}")]
 
 
 def markdown(rows):

@@ -368,6 +368,7 @@ PetscErrorCode IndContactUpdate(IndContact c, Vec U, IndContactSummary *sum)
   PetscInt           cnt[3] = {0, 0, 0};
 
   PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(IndLog.contact, 0, 0, 0, 0));
   PetscCall(VecGetArrayRead(U, &u));
   for (PetscInt i = 0; i < c->n; ++i) {
     IndContactNode ns;
@@ -402,6 +403,7 @@ PetscErrorCode IndContactUpdate(IndContact c, Vec U, IndContactSummary *sum)
   sum->penetration = PetscMax(red[4], 0.0);
   sum->pileup      = PetscMax(red[5], 0.0);
   sum->deepest     = PetscMax(red[6], 0.0);
+  PetscCall(PetscLogEventEnd(IndLog.contact, 0, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
