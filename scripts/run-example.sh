@@ -9,8 +9,8 @@ top=$(cd "$(dirname "$0")/.." && pwd)
 "$top/scripts/build.sh"
 . "$top/scripts/mpi-env.sh"
 cd "$top"
-out=output/berkovich_coarse
+out=output/berkovich_h4
 mpiexec -n 2 "${BUILD_DIR:-$top/build}/indent" -options_file inputs/berkovich.opts \
-  -mesh_geo_parameters h_tip=15,h_far=300 -output_dir "$out" "$@"
+  -mesh_geo_parameters h_tip=4,h_far=250 -output_dir "$out" "$@"
 /usr/bin/python3 scripts/plot-indent.py "$out"
 echo "Output in $out: load_displacement.csv, summary.txt, plots (*.png), imprint.csv, indent.xdmf + indent.h5 (ParaView); guide: doc/paper-case.md"

@@ -55,18 +55,13 @@ void IndContactNewtonRows(const PetscReal P[9], const PetscReal B[9], PetscInt m
 /* P = Q D Q^T: the derivative of the contact force with respect to the multiplier, global axes. */
 static void Projector(const IndContactNode *ns, PetscReal P[9])
 {
-  PetscReal Q[3][3], QD[3][3];
+  PetscReal QD[3][3];
 
-  for (int d = 0; d < 3; ++d) Q[d][0] = ns->n[d], Q[d][1] = ns->t1[d], Q[d][2] = ns->t2[d];
+  IndContactNodeQD(ns, QD);
   for (int a = 0; a < 3; ++a)
     for (int b = 0; b < 3; ++b) {
-      QD[a][b] = 0;
-      for (int k = 0; k < 3; ++k) QD[a][b] += Q[a][k] * ns->D[3 * k + b];
-    }
-  for (int a = 0; a < 3; ++a)
-    for (int b = 0; b < 3; ++b) {
-      P[3 * a + b] = 0;
-      for (int k = 0; k < 3; ++k) P[3 * a + b] += QD[a][k] * Q[b][k];
+      const PetscReal q[3] = {ns->n[b], ns->t1[b], ns->t2[b]};
+      P[3 * a + b] = QD[a][0] * q[0] + QD[a][1] * q[1] + QD[a][2] * q[2];
     }
 }
 

@@ -65,27 +65,27 @@ void IndContactNodeSolve(IndContact c, PetscInt i, const PetscScalar *u, const P
   for (int d = 0; d < 3; ++d) ns->f[d] = ns->r[0] * ns->n[d] + ns->r[1] * ns->t1[d] + ns->r[2] * ns->t2[d];
 }
 
+void IndContactNodeQD(const IndContactNode *ns, PetscReal QD[3][3])
+{
+  for (int a = 0; a < 3; ++a) {
+    const PetscReal q[3] = {ns->n[a], ns->t1[a], ns->t2[a]};
+    for (int b = 0; b < 3; ++b) QD[a][b] = q[0] * ns->D[b] + q[1] * ns->D[3 + b] + q[2] * ns->D[6 + b];
+  }
+}
+
 /* rho Q D G: the derivative with the frame held fixed. */
 static void FrozenFrameStiffness(PetscReal mu, PetscReal rho, const IndContactNode *ns, PetscReal B[9])
 {
-  PetscReal Q[3][3], G[3][3], QD[3][3];
+  PetscReal G[3][3], QD[3][3];
 
   for (int d = 0; d < 3; ++d) {
-    Q[d][0] = ns->n[d], Q[d][1] = ns->t1[d], Q[d][2] = ns->t2[d];
     G[0][d] = ns->n[d] + mu * (ns->s[0] * ns->t1[d] + ns->s[1] * ns->t2[d]);
     G[1][d] = ns->t1[d];
     G[2][d] = ns->t2[d];
   }
+  IndContactNodeQD(ns, QD);
   for (int a = 0; a < 3; ++a)
-    for (int b = 0; b < 3; ++b) {
-      QD[a][b] = 0;
-      for (int k = 0; k < 3; ++k) QD[a][b] += Q[a][k] * ns->D[3 * k + b];
-    }
-  for (int a = 0; a < 3; ++a)
-    for (int b = 0; b < 3; ++b) {
-      B[3 * a + b] = 0;
-      for (int k = 0; k < 3; ++k) B[3 * a + b] += rho * QD[a][k] * G[k][b];
-    }
+    for (int b = 0; b < 3; ++b) B[3 * a + b] = rho * (QD[a][0] * G[0][b] + QD[a][1] * G[1][b] + QD[a][2] * G[2][b]);
 }
 
 PetscBool IndContactNodeStiffness(IndContact c, PetscInt i, const PetscScalar *u, const PetscReal R[3], PetscReal B[9])

@@ -12,6 +12,9 @@ typedef struct {
 
 void IndContactNodeSolve(IndContact contact, PetscInt i, const PetscScalar *u, const PetscReal R[3], IndContactNode *node);
 
+/* Q D, Q the frame's columns (n, t1, t2) in global axes: the force's derivative in the local reaction. */
+void IndContactNodeQD(const IndContactNode *node, PetscReal QD[3][3]);
+
 /* B = -d f / d u of node i at u for the fixed reaction R (3x3, row-major, global axes), by central
    differences: it carries the rotation of the frame with the node (the curvature of the indenter's
    surface), which the projection's derivative D leaves out, so that Newton stays quadratic on a

@@ -3,21 +3,7 @@ static const char help[] = "Unit tests of the rigid indenters (gap, normal, area
 #include "ind_indenter.h"
 #include "ind_bipotential.h"
 
-static PetscInt failures = 0;
-
-static void Report(const char *what, PetscReal worst, PetscReal tol)
-{
-  const PetscBool ok = worst <= tol ? PETSC_TRUE : PETSC_FALSE;
-  if (!ok) failures++;
-  printf("  %-62s worst %.2e (tol %.0e)%s\n", what, (double)worst, (double)tol, ok ? "" : "  FAIL");
-}
-
-/* Deterministic uniform numbers in [0, 1). */
-static PetscReal Rand(unsigned long long *s)
-{
-  *s = *s * 6364136223846793005ULL + 1442695040888963407ULL;
-  return (PetscReal)((*s >> 11) * (1.0 / 9007199254740992.0));
-}
+#include "unit_report.h"
 
 static PetscReal Gap(const IndIndenter *ind, const PetscReal x[3])
 {

@@ -3,20 +3,7 @@ static const char help[] = "Unit tests of the semi-smooth Newton contact: which 
 
 #include "contact_node.h"
 
-static PetscInt failures = 0;
-
-static void Report(const char *what, PetscReal worst, PetscReal tol)
-{
-  const PetscBool ok = worst <= tol ? PETSC_TRUE : PETSC_FALSE;
-  if (!ok) failures++;
-  printf("  %-66s worst %.2e (tol %.0e)%s\n", what, (double)worst, (double)tol, ok ? "" : "  FAIL");
-}
-
-static PetscReal Rand(unsigned long long *s)
-{
-  *s = *s * 6364136223846793005ULL + 1442695040888963407ULL;
-  return (PetscReal)((*s >> 11) * (1.0 / 9007199254740992.0));
-}
+#include "unit_report.h"
 
 /* A node's three rows of a stiffness with 7 columns, its own dofs at columns 2, 3, 4. */
 #define NC 7
