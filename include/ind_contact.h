@@ -77,6 +77,8 @@ PetscErrorCode IndContactJacobian(IndContact contact, Vec U, Mat J);
 /* The semi-smooth Newton strategy (contact_newton.c). */
 PetscErrorCode IndContactNewtonResidual(IndContact contact, Vec U, Vec F);
 PetscErrorCode IndContactNewtonJacobian(IndContact contact, Vec U, Mat J);
+/* Whether the multipliers are those of a residual at U (on every rank). */
+PetscErrorCode IndContactNewtonCurrent(IndContact contact, Vec U, PetscBool *current);
 /* Its rows for one node, pure: K the node's 3 rows of the tangent (3 x ncols, row-major), diag the
    positions of the node's own 3 dofs among the columns, P = Q D Q^T and B = rho Q D G (3x3,
    global axes), mask the components held by boundary conditions. out = (I - P) M K + B at diag. */

@@ -39,6 +39,22 @@ PetscErrorCode IndContactNewtonResidual(IndContact c, Vec U, Vec F)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+PetscErrorCode IndContactNewtonCurrent(IndContact c, Vec U, PetscBool *current)
+{
+  const PetscScalar *u;
+  PetscMPIInt        same = 1;
+
+  PetscFunctionBeginUser;
+  PetscCall(VecGetArrayRead(U, &u));
+  for (PetscInt i = 0; i < c->n && same; ++i)
+    for (int d = 0; d < 3; ++d)
+      if (PetscRealPart(u[c->row[i] + d]) != c->Lu[3 * i + d]) same = 0;
+  PetscCall(VecRestoreArrayRead(U, &u));
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &same, 1, MPI_INT, MPI_MIN, c->comm));
+  *current = same ? PETSC_TRUE : PETSC_FALSE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 void IndContactNewtonRows(const PetscReal P[9], const PetscReal B[9], PetscInt mask, PetscInt ncols, const PetscInt diag[3], const PetscReal *K, PetscReal *out)
 {
   for (int a = 0; a < 3; ++a)
@@ -78,7 +94,7 @@ PetscErrorCode IndContactNewtonJacobian(IndContact c, Vec U, Mat J)
   PetscCall(VecGetArrayRead(U, &u));
   for (PetscInt i = 0; i < c->n; ++i)
     for (int d = 0; d < 3; ++d)
-      PetscCheck(PetscRealPart(u[c->row[i] + d]) == c->Lu[3 * i + d], PETSC_COMM_SELF, PETSC_ERR_PLIB, "Contact Jacobian at a displacement other than the last residual's");
+      PetscCheck(PetscRealPart(u[c->row[i] + d]) == c->Lu[3 * i + d], PETSC_COMM_SELF, PETSC_ERR_PLIB, "Contact Jacobian at a displacement other than the last residual's (see IndContactNewtonCurrent)");
   /* All rows are read before any is written: the matrix must stay assembled for MatGetRow. */
   for (PetscInt i = 0; i < c->n; ++i) {
     IndContactNode     ns;

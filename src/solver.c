@@ -36,6 +36,18 @@ static PetscErrorCode FormJacobian(SNES snes, Vec U, Mat A, Mat P, void *ctx)
   PetscCall(VecCopy(U, s->Ubc));
   PetscCall(IndBCApplySolution(s->bc, s->load_factor, s->Ubc));
   PetscCall(DMGlobalToLocal(s->dm, s->Ubc, INSERT_VALUES, s->Uloc));
+  if (s->contact && s->contact->variant == IND_UZAWA_NEWTON) {
+    /* Newton's own iteration evaluates the residual at U just before; a Jacobian test or a line
+       search that did not may leave the multipliers of another displacement. */
+    PetscBool current;
+    PetscCall(IndContactNewtonCurrent(s->contact, s->Ubc, &current));
+    if (!current) {
+      Vec F;
+      PetscCall(DMGetGlobalVector(s->dm, &F));
+      PetscCall(FormResidual(NULL, U, F, s));
+      PetscCall(DMRestoreGlobalVector(s->dm, &F));
+    }
+  }
   PetscCall(IndAssemblyJacobian(s->assembly, s->Uloc, P));
   if (s->contact) PetscCall(IndContactJacobian(s->contact, s->Ubc, P));
   PetscCall(IndBCApplyJacobian(s->bc, P));
