@@ -82,7 +82,8 @@ PetscErrorCode IndContactNewtonCurrent(IndContact contact, Vec U, PetscBool *cur
 /* Its rows for one node, pure: K the node's 3 rows of the tangent (3 x ncols, row-major), diag the
    positions of the node's own 3 dofs among the columns, P = Q D Q^T and B = rho Q D G (3x3,
    global axes), mask the components held by boundary conditions. out = (I - P) M K + B at diag. */
-void IndContactNewtonRows(const PetscReal P[9], const PetscReal B[9], PetscInt mask, PetscInt ncols, const PetscInt diag[3], const PetscReal *K, PetscReal *out);
+void IndContactNewtonRows(const PetscReal P[9], const PetscReal B[9], PetscInt mask, PetscInt ncols,
+                          const PetscInt diag[3], const PetscReal *K, PetscReal *out);
 /* The outer update: R <- projection of the predictor at U (from the multipliers of the last residual,
    which must be at U, or the frozen reactions); fills the summary, whose change is |R - multiplier|. */
 PetscErrorCode IndContactUpdate(IndContact contact, Vec U, IndContactSummary *summary);

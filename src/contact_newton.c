@@ -55,7 +55,8 @@ PetscErrorCode IndContactNewtonCurrent(IndContact c, Vec U, PetscBool *current)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-void IndContactNewtonRows(const PetscReal P[9], const PetscReal B[9], PetscInt mask, PetscInt ncols, const PetscInt diag[3], const PetscReal *K, PetscReal *out)
+void IndContactNewtonRows(const PetscReal P[9], const PetscReal B[9], PetscInt mask, PetscInt ncols,
+                          const PetscInt diag[3], const PetscReal *K, PetscReal *out)
 {
   for (int a = 0; a < 3; ++a)
     for (PetscInt j = 0; j < ncols; ++j) {
@@ -94,7 +95,8 @@ PetscErrorCode IndContactNewtonJacobian(IndContact c, Vec U, Mat J)
   PetscCall(VecGetArrayRead(U, &u));
   for (PetscInt i = 0; i < c->n; ++i)
     for (int d = 0; d < 3; ++d)
-      PetscCheck(PetscRealPart(u[c->row[i] + d]) == c->Lu[3 * i + d], PETSC_COMM_SELF, PETSC_ERR_PLIB, "Contact Jacobian at a displacement other than the last residual's (see IndContactNewtonCurrent)");
+      PetscCheck(PetscRealPart(u[c->row[i] + d]) == c->Lu[3 * i + d], PETSC_COMM_SELF, PETSC_ERR_PLIB,
+                 "Contact Jacobian at a displacement other than the last residual's (see IndContactNewtonCurrent)");
   /* All rows are read before any is written: the matrix must stay assembled for MatGetRow. */
   for (PetscInt i = 0; i < c->n; ++i) {
     IndContactNode     ns;
@@ -113,7 +115,9 @@ PetscErrorCode IndContactNewtonJacobian(IndContact c, Vec U, Mat J)
       PetscCall(MatGetRow(J, c->grow[i] + a, &nc, &rc, &rv));
       if (a == 0) {
         ncols = nc;
-        PetscCheck(ncols <= 1024, PETSC_COMM_SELF, PETSC_ERR_SUP, "Contact node %" PetscInt_FMT " couples to %" PetscInt_FMT " dofs, more than 1024", c->grow[i], ncols);
+        PetscCheck(ncols <= 1024, PETSC_COMM_SELF, PETSC_ERR_SUP,
+                   "Contact node %" PetscInt_FMT " couples to %" PetscInt_FMT " dofs, more than 1024", c->grow[i],
+                   ncols);
         if (used + ncols > cap) {
           PetscInt  *nc2;
           PetscReal *nv2;
@@ -130,14 +134,17 @@ PetscErrorCode IndContactNewtonJacobian(IndContact c, Vec U, Mat J)
           for (int b = 0; b < 3; ++b)
             if (rc[j] == c->grow[i] + b) diag[b] = j;
       }
-      PetscCheck(nc == ncols, PETSC_COMM_SELF, PETSC_ERR_PLIB, "Rows of contact node %" PetscInt_FMT " differ in their columns", c->grow[i]);
+      PetscCheck(nc == ncols, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+                 "Rows of contact node %" PetscInt_FMT " differ in their columns", c->grow[i]);
       for (PetscInt j = 0; j < ncols; ++j) {
-        PetscCheck(rc[j] == cols[used + j], PETSC_COMM_SELF, PETSC_ERR_PLIB, "Rows of contact node %" PetscInt_FMT " differ in their columns", c->grow[i]);
+        PetscCheck(rc[j] == cols[used + j], PETSC_COMM_SELF, PETSC_ERR_PLIB,
+                   "Rows of contact node %" PetscInt_FMT " differ in their columns", c->grow[i]);
         K[a * ncols + j] = PetscRealPart(rv[j]);
       }
       PetscCall(MatRestoreRow(J, c->grow[i] + a, &nc, &rc, &rv));
     }
-    PetscCheck(diag[0] >= 0 && diag[1] >= 0 && diag[2] >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "Contact node %" PetscInt_FMT " has no diagonal block", c->grow[i]);
+    PetscCheck(diag[0] >= 0 && diag[1] >= 0 && diag[2] >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+               "Contact node %" PetscInt_FMT " has no diagonal block", c->grow[i]);
     IndContactNewtonRows(P, B, c->fixed[i], ncols, diag, K, vals + 3 * used);
     node[nact]  = i;
     start[nact] = used;

@@ -10,7 +10,8 @@ typedef struct {
   IndContactStatus status;
 } IndContactNode;
 
-void IndContactNodeSolve(IndContact contact, PetscInt i, const PetscScalar *u, const PetscReal R[3], IndContactNode *node);
+void IndContactNodeSolve(IndContact contact, PetscInt i, const PetscScalar *u, const PetscReal R[3],
+                         IndContactNode *node);
 
 /* Q D, Q the frame's columns (n, t1, t2) in global axes: the force's derivative in the local reaction. */
 void IndContactNodeQD(const IndContactNode *node, PetscReal QD[3][3]);
@@ -21,4 +22,5 @@ void IndContactNodeQD(const IndContactNode *node, PetscReal QD[3][3]);
    rounded tip. Where the one-sided differences disagree (a kink: a sharp edge or apex, a change of
    status) it is rho Q D G instead, the frame held fixed (G's rows n + mu (s1 t1 + s2 t2), t1, t2),
    and the return value is PETSC_FALSE. */
-PetscBool IndContactNodeStiffness(IndContact contact, PetscInt i, const PetscScalar *u, const PetscReal R[3], PetscReal B[9]);
+PetscBool IndContactNodeStiffness(IndContact contact, PetscInt i, const PetscScalar *u, const PetscReal R[3],
+                                  PetscReal B[9]);

@@ -8,7 +8,7 @@
 struct _p_IndMatInsert {
   PetscInt        nb, ncell;
   const PetscInt *gidx;   /* the discretisation's global indices, ncell x 3 nb */
-  PetscInt       *pos;    /* ncell x nb x nb: position in the row, +1, negated for the off-diagonal part; 0: not owned */
+  PetscInt       *pos;    /* ncell x nb x nb: position in the row + 1, negated in the off-diagonal part; 0: not owned */
   PetscInt        rstart, rend;
   Mat             Ad, Ao; /* the rank's diagonal and off-diagonal parts (Ao NULL on one rank) */
   PetscScalar    *ad, *ao;
