@@ -155,10 +155,9 @@ PetscErrorCode IndAssemblyJacobian(IndAssembly a, Vec Uloc, Mat J)
   IndDisc            disc = a->disc;
   const PetscInt     nb = disc->nb, nq = disc->nq, nd = disc->ndof, stride = a->history->stride;
   const PetscScalar *u, *hold;
+  IndMatInsert       ins = J == a->J ? a->insert : NULL; /* cached positions are the matrix's own */
 
   PetscFunctionBeginUser;
-  IndMatInsert       ins = J == a->J ? a->insert : NULL;
-
   PetscCall(PetscLogEventBegin(IndLog.jacobian, 0, 0, 0, 0));
   if (ins) PetscCall(IndMatInsertBegin(ins, J));
   else PetscCall(MatZeroEntries(J));

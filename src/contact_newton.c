@@ -39,16 +39,23 @@ PetscErrorCode IndContactNewtonResidual(IndContact c, Vec U, Vec F)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Whether this rank's multipliers were computed at the displacement u (the owned part of a vector). */
+static PetscBool LocalCurrent(IndContact c, const PetscScalar *u)
+{
+  for (PetscInt i = 0; i < c->n; ++i)
+    for (int d = 0; d < 3; ++d)
+      if (PetscRealPart(u[c->row[i] + d]) != c->Lu[3 * i + d]) return PETSC_FALSE;
+  return PETSC_TRUE;
+}
+
 PetscErrorCode IndContactNewtonCurrent(IndContact c, Vec U, PetscBool *current)
 {
   const PetscScalar *u;
-  PetscMPIInt        same = 1;
+  PetscMPIInt        same;
 
   PetscFunctionBeginUser;
   PetscCall(VecGetArrayRead(U, &u));
-  for (PetscInt i = 0; i < c->n && same; ++i)
-    for (int d = 0; d < 3; ++d)
-      if (PetscRealPart(u[c->row[i] + d]) != c->Lu[3 * i + d]) same = 0;
+  same = LocalCurrent(c, u) ? 1 : 0;
   PetscCall(VecRestoreArrayRead(U, &u));
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &same, 1, MPI_INT, MPI_MIN, c->comm));
   *current = same ? PETSC_TRUE : PETSC_FALSE;
@@ -93,10 +100,8 @@ PetscErrorCode IndContactNewtonJacobian(IndContact c, Vec U, Mat J)
   PetscCall(PetscLogEventBegin(IndLog.contact, 0, 0, 0, 0));
   PetscCall(PetscMalloc3(c->n, &node, c->n, &start, c->n, &len));
   PetscCall(VecGetArrayRead(U, &u));
-  for (PetscInt i = 0; i < c->n; ++i)
-    for (int d = 0; d < 3; ++d)
-      PetscCheck(PetscRealPart(u[c->row[i] + d]) == c->Lu[3 * i + d], PETSC_COMM_SELF, PETSC_ERR_PLIB,
-                 "Contact Jacobian at a displacement other than the last residual's (see IndContactNewtonCurrent)");
+  PetscCheck(LocalCurrent(c, u), PETSC_COMM_SELF, PETSC_ERR_PLIB,
+             "Contact Jacobian at a displacement other than the last residual's (see IndContactNewtonCurrent)");
   /* All rows are read before any is written: the matrix must stay assembled for MatGetRow. */
   for (PetscInt i = 0; i < c->n; ++i) {
     IndContactNode     ns;

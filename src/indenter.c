@@ -163,7 +163,7 @@ void IndIndenterGap(const IndIndenter *ind, const PetscReal x[3], PetscReal *gap
 {
   const PetscReal lowest = ind->surface - ind->depth;
   /* A sharp shape's contact sees it rounded by `rounding` (see the header) */
-  const PetscReal radius = ind->radius > 0 || ind->type == IND_INDENTER_SPHERE ? ind->radius : ind->rounding;
+  const PetscReal radius = ind->radius > 0 ? ind->radius : ind->rounding;
   PetscReal       y[3], d;
 
   if (ind->type == IND_INDENTER_FLAT) {

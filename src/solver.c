@@ -27,27 +27,36 @@ static PetscErrorCode FormResidual(SNES snes, Vec U, Vec F, void *ctx)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The semi-smooth Newton contact's multipliers are the residual at the displacement: evaluates it
+   at U unless the last residual was there already. Newton's own iteration evaluates the residual at
+   U just before the Jacobian; a Jacobian test, or the end of a line search, may not have. */
+static PetscErrorCode RefreshMultipliers(IndSolver s, Vec U)
+{
+  PetscBool current;
+  Vec       F;
+
+  PetscFunctionBeginUser;
+  if (!s->contact || s->contact->variant != IND_UZAWA_NEWTON) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(VecCopy(U, s->Ubc));
+  PetscCall(IndBCApplySolution(s->bc, s->load_factor, s->Ubc));
+  PetscCall(IndContactNewtonCurrent(s->contact, s->Ubc, &current));
+  if (current) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(DMGetGlobalVector(s->dm, &F));
+  PetscCall(FormResidual(NULL, U, F, s));
+  PetscCall(DMRestoreGlobalVector(s->dm, &F));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscErrorCode FormJacobian(SNES snes, Vec U, Mat A, Mat P, void *ctx)
 {
   IndSolver s = (IndSolver)ctx;
 
   PetscFunctionBeginUser;
   (void)snes;
+  PetscCall(RefreshMultipliers(s, U));
   PetscCall(VecCopy(U, s->Ubc));
   PetscCall(IndBCApplySolution(s->bc, s->load_factor, s->Ubc));
   PetscCall(DMGlobalToLocal(s->dm, s->Ubc, INSERT_VALUES, s->Uloc));
-  if (s->contact && s->contact->variant == IND_UZAWA_NEWTON) {
-    /* Newton's own iteration evaluates the residual at U just before; a Jacobian test or a line
-       search that did not may leave the multipliers of another displacement. */
-    PetscBool current;
-    PetscCall(IndContactNewtonCurrent(s->contact, s->Ubc, &current));
-    if (!current) {
-      Vec F;
-      PetscCall(DMGetGlobalVector(s->dm, &F));
-      PetscCall(FormResidual(NULL, U, F, s));
-      PetscCall(DMRestoreGlobalVector(s->dm, &F));
-    }
-  }
   PetscCall(IndAssemblyJacobian(s->assembly, s->Uloc, P));
   if (s->contact) PetscCall(IndContactJacobian(s->contact, s->Ubc, P));
   PetscCall(IndBCApplyJacobian(s->bc, P));
@@ -220,9 +229,7 @@ PetscErrorCode IndSolverSolve(IndSolver s, PetscReal load_factor, Vec U, IndSolv
       r->converged = PETSC_TRUE;
       break;
     }
-    /* The multipliers of the Newton variant come from the residual at U; SNES may have evaluated
-       it last elsewhere (a line search). */
-    if (c->variant == IND_UZAWA_NEWTON) PetscCall(FormResidual(NULL, U, F, s));
+    PetscCall(RefreshMultipliers(s, U));
     PetscCall(IndContactUpdate(c, U, &r->contact));
     if (c->monitor)
       PetscCall(PetscPrintf(c->comm, "    outer %2" PetscInt_FMT ": newton %2" PetscInt_FMT "  contact %5" PetscInt_FMT " (stick %5" PetscInt_FMT ", slip %5" PetscInt_FMT ")  load %.6e uN  penetration %.3e nm  reaction change %.3e  rho scale %g\n", k, its, r->contact.contact, r->contact.stick, r->contact.slip,
@@ -266,6 +273,15 @@ PetscErrorCode IndSolverPredict(IndSolver s, PetscReal t_old, PetscReal t_new, V
   PetscFunctionBeginUser;
   PetscCall(IndBCSetUp(s->bc));
   PetscCall(DMGetGlobalVector(s->dm, &G));
+  PetscCall(VecZeroEntries(G));
+  PetscCall(IndBCApplySolution(s->bc, t_new - t_old, G));
+  PetscCall(VecNorm(G, NORM_INFINITY, &gnorm));
+  if (gnorm == 0) {
+    /* Nothing prescribed moves (an indenter alone): the tangent response is zero, and the solve
+       would only cost a Jacobian and a preconditioner setup. */
+    PetscCall(DMRestoreGlobalVector(s->dm, &G));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
   PetscCall(DMGetGlobalVector(s->dm, &r));
   PetscCall(DMGetGlobalVector(s->dm, &du));
   /* The tangent at the accepted state, before the boundary conditions zero its constrained columns:
@@ -275,17 +291,6 @@ PetscErrorCode IndSolverPredict(IndSolver s, PetscReal t_old, PetscReal t_new, V
   PetscCall(IndBCApplySolution(s->bc, t_old, s->Ubc));
   PetscCall(DMGlobalToLocal(s->dm, s->Ubc, INSERT_VALUES, s->Uloc));
   PetscCall(IndAssemblyJacobian(s->assembly, s->Uloc, s->J));
-  PetscCall(VecZeroEntries(G));
-  PetscCall(IndBCApplySolution(s->bc, t_new - t_old, G));
-  PetscCall(VecNorm(G, NORM_INFINITY, &gnorm));
-  if (gnorm == 0) {
-    /* Nothing prescribed moves (an indenter alone): the tangent response is zero, and the solve
-       would only cost a preconditioner setup. */
-    PetscCall(DMRestoreGlobalVector(s->dm, &G));
-    PetscCall(DMRestoreGlobalVector(s->dm, &r));
-    PetscCall(DMRestoreGlobalVector(s->dm, &du));
-    PetscFunctionReturn(PETSC_SUCCESS);
-  }
   PetscCall(MatMult(s->J, G, r));
   PetscCall(IndBCApplyJacobian(s->bc, s->J));
   PetscCall(IndBCApplySolution(s->bc, 0.0, r));
