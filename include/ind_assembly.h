@@ -14,22 +14,29 @@ typedef PetscErrorCode (*IndVectorFn)(const PetscReal x[3], PetscReal v[3], void
 typedef enum { IND_TANGENT_CONSISTENT, IND_TANGENT_ELASTIC } IndTangent;
 extern const char *const IndTangentTypes[];
 
+/* -formulation: small strain (the paper's model), or finite strain: total Lagrangian, the same
+   constitutive kernel in the logarithmic strain space (ind_logstrain.h). */
+typedef enum { IND_FORMULATION_SMALL, IND_FORMULATION_FINITE } IndFormulation;
+extern const char *const IndFormulationTypes[];
+
 typedef struct _p_IndAssembly *IndAssembly;
 struct _p_IndAssembly {
   IndDisc      disc;
   IndMaterials mats;
   IndHistory   history;
-  IndTangent   tangent; /* -plastic_tangent: elastic only for comparisons, it loses quadratic Newton */
+  IndTangent     tangent; /* -plastic_tangent: elastic only for comparisons, it loses quadratic Newton */
+  IndFormulation formulation;
   IndVectorFn  body_force;
   void        *body_ctx;
   PetscInt     nfailed;  /* local quadrature points whose return map failed, last residual */
   PetscInt     nplastic; /* local quadrature points yielding (dp > 0), last residual */
-  PetscReal   *ue, *fe, *Ke, *G, *DB; /* per-cell work arrays, allocated once */
+  PetscReal   *ue, *fe, *Ke, *G, *DB, *B; /* per-cell work arrays, allocated once */
   Mat          J;      /* the matrix made by IndAssemblyCreateMatrix (borrowed) */
   IndMatInsert insert; /* and its cached insertion (NULL: MatSetValues) */
 };
 
-/* Per local cell, volume averages over the committed history (after IndHistoryCommit). */
+/* Per local cell, volume averages over the committed history (after IndHistoryCommit); at finite
+   strain over the current volume, of the Cauchy stress and the spatial Hencky strain. */
 typedef struct {
   PetscReal *stress;      /* 6 per cell, Voigt, GPa */
   PetscReal *strain;      /* 6 per cell, engineering shears */

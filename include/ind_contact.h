@@ -57,14 +57,20 @@ struct _p_IndContact {
   PetscReal  *Lu;       /* newton: 3n node displacements of that residual */
   PetscInt   *fixed;    /* n masks: bit d set when component d of the node is held by a boundary condition */
   PetscReal  *Uc;       /* 3n displacement at the committed state */
-  PetscReal  *A;        /* n horizontal tributary areas (projected on z) */
+  PetscReal  *A;        /* n horizontal tributary areas (projected on z), reference or current */
   PetscInt   *status;   /* n, IndContactStatus of the last update */
   PetscReal   depth_c;  /* indenter depth at the committed state */
+  PetscBool   areas_current; /* A from the deformed surface at each update (finite strain) */
+  IndMesh     mesh;          /* borrowed, for the surface's faces */
+  IndDisc     disc;          /* borrowed */
+  char        surface[IND_NAME_LEN];
 };
 
 /* Reads -indenter_* and -contact_* options; *contact is NULL when no -indenter_type is given. */
 PetscErrorCode IndContactCreate(IndMesh mesh, IndDisc disc, IndBC bc, IndContact *contact);
 PetscErrorCode IndContactDestroy(IndContact *contact);
+/* Whether the tributary areas (true contact area, contact pressure) follow the deformed surface. */
+PetscErrorCode IndContactSetCurrentAreas(IndContact contact, PetscBool current);
 /* rho per node from the diagonal of the (unconstrained) stiffness K; pen_atol from the largest depth;
    which components of the nodes the (set up) boundary conditions hold. */
 PetscErrorCode IndContactSetUp(IndContact contact, IndBC bc, Mat K, PetscReal depth_max);

@@ -1,7 +1,7 @@
-#include "ind_assembly.h"
-#include "ind_elasticity.h"
+#include "assembly_impl.h"
 
-const char *const IndTangentTypes[] = {"consistent", "elastic", "IndTangent", "IND_TANGENT_", NULL};
+const char *const IndTangentTypes[]     = {"consistent", "elastic", "IndTangent", "IND_TANGENT_", NULL};
+const char *const IndFormulationTypes[] = {"small", "finite", "IndFormulation", "IND_FORMULATION_", NULL};
 
 PetscErrorCode IndAssemblyCreate(IndDisc disc, IndMaterials mats, IndHistory history, IndAssembly *out)
 {
@@ -15,9 +15,10 @@ PetscErrorCode IndAssemblyCreate(IndDisc disc, IndMaterials mats, IndHistory his
   a->history = history;
   a->tangent = IND_TANGENT_CONSISTENT;
   PetscOptionsBegin(PetscObjectComm((PetscObject)disc->dm), NULL, "Assembly", "Assembly");
+  PetscCall(PetscOptionsEnum("-formulation", "Kinematics: small strain (the paper's model) or finite strain (total Lagrangian, plasticity in logarithmic strain)", "", IndFormulationTypes, (PetscEnum)a->formulation, (PetscEnum *)&a->formulation, NULL));
   PetscCall(PetscOptionsEnum("-plastic_tangent", "Tangent of plastic points: consistent (quadratic Newton) or elastic", "", IndTangentTypes, (PetscEnum)a->tangent, (PetscEnum *)&a->tangent, NULL));
   PetscOptionsEnd();
-  PetscCall(PetscMalloc5(nd, &a->ue, nd, &a->fe, nd * nd, &a->Ke, disc->nb * 3, &a->G, 6 * nd, &a->DB));
+  PetscCall(PetscMalloc6(nd, &a->ue, nd, &a->fe, nd * nd, &a->Ke, disc->nb * 3, &a->G, 6 * nd, &a->DB, 6 * nd, &a->B));
   *out = a;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -26,7 +27,7 @@ PetscErrorCode IndAssemblyDestroy(IndAssembly *a)
 {
   PetscFunctionBeginUser;
   if (!*a) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCall(PetscFree5((*a)->ue, (*a)->fe, (*a)->Ke, (*a)->G, (*a)->DB));
+  PetscCall(PetscFree6((*a)->ue, (*a)->fe, (*a)->Ke, (*a)->G, (*a)->DB, (*a)->B));
   PetscCall(IndMatInsertDestroy(&(*a)->insert));
   PetscCall(PetscFree(*a));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -47,31 +48,6 @@ static inline void Strain(PetscInt nb, const PetscReal *G, const PetscReal *u, P
   }
 }
 
-static inline void GatherCell(IndDisc disc, PetscInt i, const PetscScalar *u, PetscReal *ue)
-{
-  const PetscInt *idx = disc->lidx + i * disc->ndof;
-  for (PetscInt k = 0; k < disc->ndof; ++k) ue[k] = PetscRealPart(u[idx[k]]);
-}
-
-/* The constitutive update of one quadrature point from its committed history old (IND_HISTORY_NVAL
-   values); writes the trial history to trial when not NULL and the tangent to D when not NULL. */
-static inline IndPlasticStatus MaterialResponse(const IndMaterial *m, IndTangent tangent, const PetscReal eps[6], const PetscReal *old, PetscReal *trial, PetscReal sigma[6], PetscReal *D, PetscReal *dp)
-{
-  IndPlasticState  scratch;
-  IndPlasticStatus status;
-
-  *dp = 0.0;
-  if (m->model == IND_MODEL_ELASTIC) {
-    IndElasticStress(m->kappa, m->mu, eps, sigma);
-    if (D) IndElasticTangent(m->kappa, m->mu, D);
-    return IND_PLASTIC_OK;
-  }
-  status = IndPlasticUpdate(&m->plastic, eps, (const IndPlasticState *)old, trial ? (IndPlasticState *)trial : &scratch, sigma, tangent == IND_TANGENT_CONSISTENT ? D : NULL, dp);
-  if (trial) trial[IND_HISTORY_DP] = *dp;
-  if (D && tangent == IND_TANGENT_ELASTIC) IndElasticTangent(m->kappa, m->mu, D);
-  return status;
-}
-
 PetscErrorCode IndAssemblyResidual(IndAssembly a, Vec Uloc, Vec Floc)
 {
   IndDisc            disc = a->disc;
@@ -81,6 +57,10 @@ PetscErrorCode IndAssemblyResidual(IndAssembly a, Vec Uloc, Vec Floc)
   PetscScalar       *f, *htrial;
 
   PetscFunctionBeginUser;
+  if (a->formulation == IND_FORMULATION_FINITE) {
+    PetscCall(IndAssemblyResidualFinite(a, Uloc, Floc));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
   PetscCall(PetscLogEventBegin(IndLog.residual, 0, 0, 0, 0));
   a->nfailed = a->nplastic = 0;
   PetscCall(VecZeroEntries(Floc));
@@ -158,6 +138,10 @@ PetscErrorCode IndAssemblyJacobian(IndAssembly a, Vec Uloc, Mat J)
   IndMatInsert       ins = J == a->J ? a->insert : NULL; /* cached positions are the matrix's own */
 
   PetscFunctionBeginUser;
+  if (a->formulation == IND_FORMULATION_FINITE) {
+    PetscCall(IndAssemblyJacobianFinite(a, Uloc, J));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
   PetscCall(PetscLogEventBegin(IndLog.jacobian, 0, 0, 0, 0));
   if (ins) PetscCall(IndMatInsertBegin(ins, J));
   else PetscCall(MatZeroEntries(J));
@@ -257,16 +241,18 @@ PetscErrorCode IndAssemblyCellAverages(IndAssembly a, Vec Uloc, IndCellFields *o
     PetscReal          vol = 0, savg[6] = {0}, eavg[6] = {0}, pavg = 0, xavg = 0, yavg = 0;
     GatherCell(disc, i, u, a->ue);
     for (PetscInt q = 0; q < nq; ++q) {
-      const PetscReal  w = disc->wdetJ[i * nq + q];
       const PetscReal *h = hist + i * stride + q * IND_HISTORY_NVAL;
       const IndPlasticState *st = (const IndPlasticState *)h;
-      PetscReal        eps[6], ee[6], s[6];
-      IndDiscGradients(disc, i, q, a->G);
-      Strain(disc->nb, a->G, a->ue, eps);
-      /* The committed state is the converged one: its stress is elastic in eps - eps_p (eps_p is
-         deviatoric), with no return map to repeat. */
-      for (int k = 0; k < 6; ++k) ee[k] = eps[k] - st->eps_p[k];
-      IndElasticStress(m->kappa, m->mu, ee, s);
+      PetscReal        eps[6], ee[6], s[6], w = disc->wdetJ[i * nq + q];
+      if (a->formulation == IND_FORMULATION_FINITE) IndAssemblyFinitePointFields(a, i, q, h, s, eps, &w);
+      else {
+        IndDiscGradients(disc, i, q, a->G);
+        Strain(disc->nb, a->G, a->ue, eps);
+        /* The committed state is the converged one: its stress is elastic in eps - eps_p (eps_p is
+           deviatoric), with no return map to repeat. */
+        for (int k = 0; k < 6; ++k) ee[k] = eps[k] - st->eps_p[k];
+        IndElasticStress(m->kappa, m->mu, ee, s);
+      }
       vol += w;
       for (int k = 0; k < 6; ++k) {
         savg[k] += w * s[k];

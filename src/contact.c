@@ -110,8 +110,9 @@ static PetscErrorCode FaceAreas(DM dm, PetscSection s, PetscInt face, const Pets
 }
 
 /* Marks the nodes of the contact surface and sums their tributary areas, in a global vector laid out
-   like the displacement: slot 0 counts faces, slot 2 holds the area. */
-static PetscErrorCode SurfaceNodes(IndMesh mesh, IndDisc disc, const char surface[], Vec G)
+   like the displacement: slot 0 counts faces, slot 2 holds the area. With Uloc (a local displacement)
+   the faces are taken through their vertices' current positions X + u. */
+static PetscErrorCode SurfaceNodes(IndMesh mesh, IndDisc disc, const char surface[], Vec Uloc, Vec G)
 {
   DM                 dm = disc->dm, cdm;
   PetscSection       s, cs;
@@ -119,9 +120,13 @@ static PetscErrorCode SurfaceNodes(IndMesh mesh, IndDisc disc, const char surfac
   IS                 faces;
   Vec                loc, X;
   PetscScalar       *a;
+  const PetscScalar *u = NULL;
+  PetscInt           vStart, vEnd;
 
   PetscFunctionBeginUser;
   PetscCall(IndMeshGetRegionLabel(mesh, surface, 2, "-contact_surface", &label));
+  PetscCall(DMPlexGetDepthStratum(dm, 0, &vStart, &vEnd));
+  if (Uloc) PetscCall(VecGetArrayRead(Uloc, &u));
   PetscCall(DMGetLocalSection(dm, &s));
   PetscCall(DMGetCoordinateDM(dm, &cdm));
   PetscCall(DMGetLocalSection(cdm, &cs));
@@ -136,9 +141,9 @@ static PetscErrorCode SurfaceNodes(IndMesh mesh, IndDisc disc, const char surfac
     PetscCall(ISGetLocalSize(faces, &nf));
     PetscCall(ISGetIndices(faces, &f));
     for (PetscInt i = 0; i < nf; ++i) {
-      PetscInt    *closure = NULL, ncl, nc;
+      PetscInt    *closure = NULL, ncl, nc, nv = 0;
       PetscScalar *xc = NULL;
-      PetscReal    vx[12];
+      PetscReal    vx[12], uv[12];
       PetscCall(DMPlexGetTransitiveClosure(dm, f[i], PETSC_TRUE, &ncl, &closure));
       for (PetscInt j = 0; j < ncl; ++j) {
         PetscInt dof, o;
@@ -146,11 +151,17 @@ static PetscErrorCode SurfaceNodes(IndMesh mesh, IndDisc disc, const char surfac
         if (dof < 3) continue;
         PetscCall(PetscSectionGetOffset(s, closure[2 * j], &o));
         a[o] += 1.0;
+        /* vertices come in the closure's order, as in the coordinate closure below */
+        if (closure[2 * j] >= vStart && closure[2 * j] < vEnd && nv < 4) {
+          for (int d = 0; d < 3; ++d) uv[3 * nv + d] = u ? PetscRealPart(u[o + d]) : 0.0;
+          nv++;
+        }
       }
       PetscCall(DMPlexRestoreTransitiveClosure(dm, f[i], PETSC_TRUE, &ncl, &closure));
       PetscCall(DMPlexVecGetClosure(cdm, cs, X, f[i], &nc, &xc));
       PetscCheck(nc == 9 || nc == 12, PETSC_COMM_SELF, PETSC_ERR_SUP, "Contact surface '%s': faces must be flat triangles or quadrilaterals with straight edges", surface);
-      for (PetscInt k = 0; k < nc; ++k) vx[k] = PetscRealPart(xc[k]);
+      PetscCheck(3 * nv == nc, PETSC_COMM_SELF, PETSC_ERR_PLIB, "Contact surface '%s': face with %" PetscInt_FMT " vertices and %" PetscInt_FMT " coordinates", surface, nv, nc);
+      for (PetscInt k = 0; k < nc; ++k) vx[k] = PetscRealPart(xc[k]) + uv[k];
       PetscCall(DMPlexVecRestoreClosure(cdm, cs, X, f[i], &nc, &xc));
       PetscCall(FaceAreas(dm, s, f[i], vx, nc / 3, disc->degree, a));
     }
@@ -158,6 +169,7 @@ static PetscErrorCode SurfaceNodes(IndMesh mesh, IndDisc disc, const char surfac
     PetscCall(ISDestroy(&faces));
   }
   PetscCall(VecRestoreArray(loc, &a));
+  if (Uloc) PetscCall(VecRestoreArrayRead(Uloc, &u));
   PetscCall(VecZeroEntries(G));
   PetscCall(DMLocalToGlobal(dm, loc, ADD_VALUES, G));
   PetscCall(DMRestoreLocalVector(dm, &loc));
@@ -255,7 +267,7 @@ PetscErrorCode IndContactCreate(IndMesh mesh, IndDisc disc, IndBC bc, IndContact
 
   /* The owned nodes of the contact surface, their positions and tributary areas. */
   PetscCall(DMCreateGlobalVector(disc->dm, &G));
-  PetscCall(SurfaceNodes(mesh, disc, surface, G));
+  PetscCall(SurfaceNodes(mesh, disc, surface, NULL, G));
   PetscCall(IndDiscNodeCoordinates(disc, &nodes));
   PetscCall(VecGetLocalSize(G, &n));
   PetscCall(VecGetOwnershipRange(G, &rstart, NULL));
@@ -288,6 +300,9 @@ PetscErrorCode IndContactCreate(IndMesh mesh, IndDisc disc, IndBC bc, IndContact
   PetscCall(VecDestroy(&G));
   c->indenter = ind;
   c->symmetry = has_sym ? symmetry : SymmetryFactor(bc, &ind);
+  c->mesh     = mesh;
+  c->disc     = disc;
+  PetscCall(PetscStrncpy(c->surface, surface, sizeof(c->surface)));
   *out        = c;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -361,6 +376,34 @@ static const PetscReal *Multiplier(IndContact c, PetscInt i)
   return (c->variant == IND_UZAWA_NEWTON ? c->L : c->R) + 3 * i;
 }
 
+PetscErrorCode IndContactSetCurrentAreas(IndContact c, PetscBool current)
+{
+  PetscFunctionBeginUser;
+  c->areas_current = current;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The tributary areas of the nodes projected on the plane normal to z, through the current positions
+   of the surface's vertices (finite strain: the area that carries the load is the deformed one). */
+static PetscErrorCode CurrentAreas(IndContact c, Vec U)
+{
+  DM                 dm = c->disc->dm;
+  Vec                Uloc, G;
+  const PetscScalar *g;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMGetLocalVector(dm, &Uloc));
+  PetscCall(DMGetGlobalVector(dm, &G));
+  PetscCall(DMGlobalToLocal(dm, U, INSERT_VALUES, Uloc));
+  PetscCall(SurfaceNodes(c->mesh, c->disc, c->surface, Uloc, G));
+  PetscCall(VecGetArrayRead(G, &g));
+  for (PetscInt i = 0; i < c->n; ++i) c->A[i] = PetscRealPart(g[c->row[i] + 2]);
+  PetscCall(VecRestoreArrayRead(G, &g));
+  PetscCall(DMRestoreGlobalVector(dm, &G));
+  PetscCall(DMRestoreLocalVector(dm, &Uloc));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode IndContactUpdate(IndContact c, Vec U, IndContactSummary *sum)
 {
   const PetscScalar *u;
@@ -369,6 +412,7 @@ PetscErrorCode IndContactUpdate(IndContact c, Vec U, IndContactSummary *sum)
 
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(IndLog.contact, 0, 0, 0, 0));
+  if (c->areas_current) PetscCall(CurrentAreas(c, U));
   PetscCall(VecGetArrayRead(U, &u));
   for (PetscInt i = 0; i < c->n; ++i) {
     IndContactNode ns;

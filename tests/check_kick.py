@@ -3,7 +3,8 @@
 
   check_kick.py --indent BIN --mesh MESH --workdir DIR [--np 2] [--mpiexec M]
                 [--mpiexec-args "--oversubscribe"] [--depth 36] [--steps 12]
-                [--min-elements 5] [--tol 0.02]
+                [--min-elements 5] [--tol 0.02] [--young 100] [--yield 1] [--friction 0]
+                [--options "-formulation finite ..."] [--expect-C GPa --C-tol 0.1] [--unload-steps N]
 
 A rigid sharp cone (70.3 deg half-angle, -indenter_radius 0) is pressed, frictionless and without
 unloading, into the quarter block of tests/meshes/kick_block.geo (region `domain`, E = 100 GPa,
@@ -20,9 +21,18 @@ on blocks graded right from the tip (tests/meshes/hertz_block.geo) the rings of 
 enter, and P / h^2 rose and fell by 3 to 6% with each. kick_block.geo keeps a core of equal cubes;
 the contact must stay inside it (P / h^2 rose by 2% once the contact reached the core's edge).
 
+With --expect-C the mean of the counted P / h^2 (in GPa) must lie within --C-tol of it: 25.8 GPa is
+the large-deformation value of Dao et al. (Acta Mater. 49 (2001) 3899) for a 70.3 deg cone with
+friction 0.15 in a block with E = 70 GPa, nu = 0.3 and yield 0.3 GPa.
+
+With --unload-steps the run unloads and summary.json gives the pile-up figures; the check is Bolshakov
+& Pharr's trend (J. Mater. Res. 13 (1998) 1049) for a non-hardening solid: h_f / h_max > 0.7 (h_f the
+residual depth) and a true contact area larger than the Oliver-Pharr area A(h_c) (pile-up).
+
 Exit status: 0 pass, 1 a check or the run failed, 2 bad arguments.
 """
 import csv
+import json
 import math
 import os
 import sys
@@ -30,16 +40,20 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import meshcheck  # noqa: E402
 
-E, NU, YIELD = 100.0, 0.3, 1.0
+NU = 0.3
 
-INDENT_OPTIONS = [
-    "-domain_young", str(E), "-domain_poisson", str(NU),
-    "-domain_model", "plastic", "-domain_yield", str(YIELD), "-domain_hardening", "linear", "-domain_hardening_slope", "0",
-    "-bc_symmetry", "left,front", "-bc_fixed", "bottom",
-    "-indenter_type", "cone", "-indenter_radius", "0", "-contact_friction", "0", "-load_unload", "0",
-    "-ksp_type", "preonly", "-pc_type", "lu", "-pc_factor_mat_solver_type", "mumps",
-    "-output_fields", "0", "-quiet",
-]
+
+
+def indent_options(args):
+    return [
+        "-domain_young", f"{args.young:g}", "-domain_poisson", str(NU),
+        "-domain_model", "plastic", "-domain_yield", f"{args.yield_stress:g}", "-domain_hardening", "linear",
+        "-domain_hardening_slope", "0", "-bc_symmetry", "left,front", "-bc_fixed", "bottom",
+        "-indenter_type", "cone", "-indenter_radius", "0", "-contact_friction", f"{args.friction:g}",
+        *(["-load_unload_steps", str(args.unload_steps)] if args.unload_steps else ["-load_unload", "0"]),
+        "-ksp_type", "preonly", "-pc_type", "lu", "-pc_factor_mat_solver_type", "mumps",
+        "-output_fields", "0", "-quiet", *args.options.split(),
+    ]
 
 PROG = "check_kick.py"
 
@@ -54,6 +68,13 @@ def parse():
     ap.add_argument("--steps", type=int, default=12, help="load steps (12)")
     ap.add_argument("--min-elements", type=int, default=5, help="elements the contact radius must span for a step to count (5)")
     ap.add_argument("--tol", type=float, default=0.02, help="largest relative deviation of P/h^2 from the mean of the counted steps (0.02)")
+    ap.add_argument("--young", type=float, default=100.0, help="Young's modulus, GPa (100)")
+    ap.add_argument("--yield", dest="yield_stress", type=float, default=1.0, help="yield stress, GPa (1)")
+    ap.add_argument("--friction", type=float, default=0.0, help="Coulomb friction coefficient (0)")
+    ap.add_argument("--options", default="", help="more indent options, e.g. \"-formulation finite\"")
+    ap.add_argument("--expect-C", type=float, default=None, help="expected P/h^2, GPa (none: not checked)")
+    ap.add_argument("--C-tol", type=float, default=0.1, help="relative tolerance on --expect-C (0.1)")
+    ap.add_argument("--unload-steps", type=int, default=0, help="unload in this many steps and check the pile-up trend (0)")
     args = ap.parse_args()
     meshcheck.check_common(PROG, args)
     if args.steps < 1 or args.min_elements < 1:
@@ -111,7 +132,7 @@ def uniform_core(xs):
 
 
 def run_indent(args, out):
-    return meshcheck.run_indent(PROG, args, [*INDENT_OPTIONS, "-load_depth", f"{args.depth:g}", "-load_steps", str(args.steps)], out)
+    return meshcheck.run_indent(PROG, args, [*indent_options(args), "-load_depth", f"{args.depth:g}", "-load_steps", str(args.steps)], out)
 
 
 def main():
@@ -138,7 +159,8 @@ def main():
         print(f"FAIL: cannot read {curve}: {e}")
         return 1
 
-    print(f"cone 70.3 deg, E/Y = {E / YIELD:g}, depth {args.depth:g} nm in {args.steps} steps: {len(steps)} steps, "
+    steps = [s for s in steps if s[0] <= steps_loading(steps)]
+    print(f"cone 70.3 deg, E/Y = {args.young / args.yield_stress:g}, friction {args.friction:g} {args.options}, depth {args.depth:g} nm in {args.steps} steps: {len(steps)} steps, "
           f"{steps[-1][6] if steps else 0} cutbacks, {sum(s[5] for s in steps)} Newton iterations, {wall:.1f} s")
     print(f"a step counts when its contact radius a = sqrt(A/pi) spans >= {args.min_elements} elements (a >= {a_min:.4g} nm; "
           f"element edges along the radius at {', '.join(f'{x:.4g}' for x in xs[:args.min_elements + 3])}, ... nm)")
@@ -176,8 +198,36 @@ def main():
         print(f"FAIL: P/h^2 at step {counted[worst][0]} (h = {counted[worst][1]:g} nm) is {100 * dev[worst]:+.2f}% off the mean "
               f"(tolerance {100 * args.tol:g}%)")
         return 1
-    print(f"PASS: every counted P/h^2 within {100 * args.tol:g}% of the mean (largest {100 * abs(dev[worst]):.2f}%)")
+    print(f"every counted P/h^2 within {100 * args.tol:g}% of the mean (largest {100 * abs(dev[worst]):.2f}%)")
+    if args.expect_C is not None:
+        C = 1e3 * mean  # uN/nm^2 -> GPa
+        off = C / args.expect_C - 1
+        print(f"Kick's constant C = {C:.4g} GPa against {args.expect_C:g} GPa: {100 * off:+.2f}% (tolerance {100 * args.C_tol:g}%)")
+        if abs(off) > args.C_tol:
+            print("FAIL: Kick's constant off the expected value")
+            return 1
+    if args.unload_steps:
+        try:
+            with open(os.path.join(out, "summary.json")) as f:
+                summary = json.load(f)
+            values = {k: v["value"] if isinstance(v, dict) else v for k, v in summary.items()}
+            hf, hmax, ratio = values["residual_depth_nm"], values["h_max_nm"], values["area_ratio"]
+            pile = values["pileup_at_P_max_nm"]
+        except (OSError, KeyError, ValueError, TypeError) as e:
+            print(f"FAIL: cannot read the pile-up figures of {out}/summary.json: {e}")
+            return 1
+        print(f"unloaded: h_f/h_max = {hf / hmax:.3f}, true area / A(h_c) = {ratio:.3f}, pile-up at P_max {pile:.3g} nm "
+              f"({100 * pile / hmax:.1f}% of h_max); Bolshakov & Pharr: h_f/h_max > 0.7 with pile-up (ratio > 1)")
+        if not (hf / hmax > 0.7 and ratio > 1):
+            print("FAIL: not the pile-up trend of a non-hardening solid")
+            return 1
+    print("PASS")
     return 0
+
+
+def steps_loading(steps):
+    """The last step of the loading (the step of the largest depth)."""
+    return max(steps, key=lambda s: s[1])[0] if steps else 0
 
 
 if __name__ == "__main__":

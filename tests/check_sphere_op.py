@@ -41,7 +41,7 @@ INDENT_OPTIONS = [
     "-domain_young", str(E), "-domain_poisson", str(NU),
     "-bc_symmetry", "left,front", "-bc_fixed", "bottom",
     "-indenter_type", "sphere", "-indenter_radius", str(R), "-contact_friction", "0", "-contact_gap", "reference",
-    "-load_steps", "2", "-load_unload_steps", str(UNLOAD_STEPS), "-load_unload_growth", "1",
+    "-formulation", "small", "-load_steps", "2", "-load_unload_steps", str(UNLOAD_STEPS), "-load_unload_growth", "1",
     "-op_beta", "1", "-op_fraction", "1", "-op_poisson", str(NU),
     "-ksp_type", "preonly", "-pc_type", "lu", "-pc_factor_mat_solver_type", "mumps",
     "-output_fields", "0", "-quiet",

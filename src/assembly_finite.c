@@ -1,0 +1,208 @@
+/* Total Lagrangian finite strain: residual int G_a . P dV with P = F S, and its exact derivative
+   B^T (dS/dE_GL) B + (G_a . S G_b) I, the second term being the geometric (initial stress) stiffness.
+   The reference configuration's gradients, weights and history layout are those of the small-strain
+   loops; only the kinematics and the material point differ. */
+#include "assembly_impl.h"
+#include "ind_logstrain.h"
+
+/* The displacement gradient H = sum_a u_a (x) G_a and F = I + H, row-major. */
+static inline void DeformationGradient(PetscInt nb, const PetscReal *G, const PetscReal *u, PetscReal H[9], PetscReal F[9])
+{
+  for (int k = 0; k < 9; ++k) H[k] = 0.0;
+  for (PetscInt a = 0; a < nb; ++a)
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) H[3 * i + j] += u[3 * a + i] * G[3 * a + j];
+  for (int k = 0; k < 9; ++k) F[k] = H[k] + (k % 4 == 0 ? 1.0 : 0.0);
+}
+
+/* The material point: the small-strain response at the Hencky strain, mapped to S (and DS). An
+   inverted point (det F <= 0) fails like a return map that does not converge: the step is cut. */
+static inline IndPlasticStatus FinitePoint(const IndMaterial *m, IndTangent tangent, const PetscReal H[9], const PetscReal *old, PetscReal *trial, PetscReal S[6], PetscReal *DS, PetscReal *dp)
+{
+  IndLogStrain     ls;
+  IndPlasticStatus status;
+  PetscReal        E[6], T[6], D[36];
+
+  *dp = 0.0;
+  if (IndLogStrainFromGradient(H, &ls, E)) return IND_PLASTIC_NOT_CONVERGED;
+  status = MaterialResponse(m, tangent, E, old, trial, T, DS ? D : NULL, dp);
+  if (status != IND_PLASTIC_OK) return status;
+  IndLogStrainStress(&ls, T, S);
+  if (DS) IndLogStrainTangent(&ls, T, D, DS);
+  return status;
+}
+
+PetscErrorCode IndAssemblyResidualFinite(IndAssembly a, Vec Uloc, Vec Floc)
+{
+  IndDisc            disc = a->disc;
+  const PetscInt     nb = disc->nb, nq = disc->nq, stride = a->history->stride;
+  const PetscScalar *u, *hold;
+  PetscScalar       *f, *htrial;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(IndLog.residual, 0, 0, 0, 0));
+  a->nfailed = a->nplastic = 0;
+  PetscCall(VecZeroEntries(Floc));
+  PetscCall(VecGetArrayRead(Uloc, &u));
+  PetscCall(VecGetArray(Floc, &f));
+  PetscCall(VecGetArrayRead(a->history->committed, &hold));
+  PetscCall(VecGetArray(a->history->trial, &htrial));
+  for (PetscInt i = 0; i < disc->ncell; ++i) {
+    const IndMaterial *m   = &a->mats->mat[a->mats->cell_material[i]];
+    const PetscInt    *idx = disc->lidx + i * disc->ndof;
+
+    GatherCell(disc, i, u, a->ue);
+    PetscCall(PetscArrayzero(a->fe, disc->ndof));
+    for (PetscInt q = 0; q < nq; ++q) {
+      const PetscReal  w    = disc->wdetJ[i * nq + q];
+      const PetscInt   off  = i * stride + q * IND_HISTORY_NVAL;
+      PetscReal        H[9], F[9], S[6], P[9], dp;
+      IndPlasticStatus status;
+
+      IndDiscGradients(disc, i, q, a->G);
+      DeformationGradient(nb, a->G, a->ue, H, F);
+      status = FinitePoint(m, a->tangent, H, hold + off, htrial + off, S, NULL, &dp);
+      if (status != IND_PLASTIC_OK) {
+        a->nfailed++;
+        continue;
+      }
+      if (dp > 0) a->nplastic++;
+      /* P = F S = S + H S, summed so that small strains keep their digits */
+      for (int r = 0; r < 3; ++r) {
+        const PetscReal H0 = H[3 * r], H1 = H[3 * r + 1], H2 = H[3 * r + 2];
+        P[3 * r + 0] = H0 * S[0] + H1 * S[3] + H2 * S[5];
+        P[3 * r + 1] = H0 * S[3] + H1 * S[1] + H2 * S[4];
+        P[3 * r + 2] = H0 * S[5] + H1 * S[4] + H2 * S[2];
+      }
+      P[0] += S[0], P[1] += S[3], P[2] += S[5], P[3] += S[3], P[4] += S[1], P[5] += S[4], P[6] += S[5], P[7] += S[4], P[8] += S[2];
+      for (PetscInt b = 0; b < nb; ++b) {
+        const PetscReal gx = a->G[3 * b], gy = a->G[3 * b + 1], gz = a->G[3 * b + 2];
+        for (int r = 0; r < 3; ++r) a->fe[3 * b + r] += w * (P[3 * r] * gx + P[3 * r + 1] * gy + P[3 * r + 2] * gz);
+      }
+      if (a->body_force) {
+        PetscReal bf[3];
+        PetscCall(a->body_force(disc->xq + (i * nq + q) * 3, bf, a->body_ctx));
+        for (PetscInt b = 0; b < nb; ++b)
+          for (int c = 0; c < 3; ++c) a->fe[3 * b + c] -= w * disc->N[q * nb + b] * bf[c];
+      }
+    }
+    for (PetscInt k = 0; k < disc->ndof; ++k) f[idx[k]] += a->fe[k];
+  }
+  PetscCall(VecRestoreArrayRead(a->history->committed, &hold));
+  PetscCall(VecRestoreArray(a->history->trial, &htrial));
+  PetscCall(VecRestoreArrayRead(Uloc, &u));
+  PetscCall(VecRestoreArray(Floc, &f));
+  PetscCall(PetscLogFlops(disc->ncell * nq * (1500.0 + 60.0 * nb)));
+  PetscCall(PetscLogEventEnd(IndLog.residual, 0, 0, 0, 0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Ke += w (B^T DS B + geometric), B the 6 x nd derivative of the Green-Lagrange strain (engineering
+   shears): column 3a+i of B is sym(F^T (e_i (x) G_a)). */
+static inline void AddFiniteStiffness(PetscInt nb, const PetscReal *G, const PetscReal F[9], const PetscReal S[6], const PetscReal DS[36], PetscReal w, PetscReal *B, PetscReal *DB, PetscReal *Ke)
+{
+  const PetscInt nd = 3 * nb;
+
+  for (PetscInt a = 0; a < nb; ++a) {
+    const PetscReal gx = G[3 * a], gy = G[3 * a + 1], gz = G[3 * a + 2];
+    for (int i = 0; i < 3; ++i) {
+      const PetscReal F0 = F[3 * i], F1 = F[3 * i + 1], F2 = F[3 * i + 2];
+      const PetscInt  c  = 3 * a + i;
+      B[0 * nd + c] = F0 * gx;
+      B[1 * nd + c] = F1 * gy;
+      B[2 * nd + c] = F2 * gz;
+      B[3 * nd + c] = F0 * gy + F1 * gx;
+      B[4 * nd + c] = F1 * gz + F2 * gy;
+      B[5 * nd + c] = F0 * gz + F2 * gx;
+    }
+  }
+  for (int r = 0; r < 6; ++r)
+    for (PetscInt k = 0; k < nd; ++k) {
+      PetscReal v = 0;
+      for (int s = 0; s < 6; ++s) v += DS[6 * r + s] * B[s * nd + k];
+      DB[r * nd + k] = w * v;
+    }
+  for (PetscInt j = 0; j < nd; ++j) {
+    PetscReal *Kj = Ke + j * nd;
+    for (int r = 0; r < 6; ++r) {
+      const PetscReal  brj = B[r * nd + j];
+      const PetscReal *DBr = DB + r * nd;
+      for (PetscInt k = 0; k < nd; ++k) Kj[k] += brj * DBr[k];
+    }
+  }
+  for (PetscInt a = 0; a < nb; ++a) {
+    const PetscReal ga[3] = {G[3 * a], G[3 * a + 1], G[3 * a + 2]};
+    const PetscReal Sg[3] = {S[0] * ga[0] + S[3] * ga[1] + S[5] * ga[2], S[3] * ga[0] + S[1] * ga[1] + S[4] * ga[2], S[5] * ga[0] + S[4] * ga[1] + S[2] * ga[2]};
+    for (PetscInt b = 0; b < nb; ++b) {
+      const PetscReal g = w * (Sg[0] * G[3 * b] + Sg[1] * G[3 * b + 1] + Sg[2] * G[3 * b + 2]);
+      for (int i = 0; i < 3; ++i) Ke[(3 * a + i) * nd + 3 * b + i] += g;
+    }
+  }
+}
+
+PetscErrorCode IndAssemblyJacobianFinite(IndAssembly a, Vec Uloc, Mat J)
+{
+  IndDisc            disc = a->disc;
+  const PetscInt     nb = disc->nb, nq = disc->nq, nd = disc->ndof, stride = a->history->stride;
+  const PetscScalar *u, *hold;
+  IndMatInsert       ins = J == a->J ? a->insert : NULL;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(IndLog.jacobian, 0, 0, 0, 0));
+  if (ins) PetscCall(IndMatInsertBegin(ins, J));
+  else PetscCall(MatZeroEntries(J));
+  PetscCall(VecGetArrayRead(Uloc, &u));
+  PetscCall(VecGetArrayRead(a->history->committed, &hold));
+  for (PetscInt i = 0; i < disc->ncell; ++i) {
+    const IndMaterial *m = &a->mats->mat[a->mats->cell_material[i]];
+    const PetscInt    *g = disc->gidx + i * nd;
+
+    GatherCell(disc, i, u, a->ue);
+    PetscCall(PetscArrayzero(a->Ke, nd * nd));
+    for (PetscInt q = 0; q < nq; ++q) {
+      PetscReal H[9], F[9], S[6], DS[36], dp;
+      IndDiscGradients(disc, i, q, a->G);
+      DeformationGradient(nb, a->G, a->ue, H, F);
+      /* a failed point was reported by the residual at this displacement, which stops the Newton
+         iteration before any Jacobian */
+      if (FinitePoint(m, a->tangent, H, hold + i * stride + q * IND_HISTORY_NVAL, NULL, S, DS, &dp) != IND_PLASTIC_OK) continue;
+      AddFiniteStiffness(nb, a->G, F, S, DS, disc->wdetJ[i * nq + q], a->B, a->DB, a->Ke);
+    }
+    if (ins) PetscCall(IndMatInsertCell(ins, J, i, a->Ke));
+    else PetscCall(MatSetValues(J, nd, g, nd, g, a->Ke, ADD_VALUES));
+  }
+  PetscCall(VecRestoreArrayRead(a->history->committed, &hold));
+  PetscCall(VecRestoreArrayRead(Uloc, &u));
+  if (ins) PetscCall(IndMatInsertEnd(ins, J));
+  else {
+    PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
+    PetscCall(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));
+  }
+  PetscCall(PetscLogFlops(disc->ncell * nq * (12.0 * nd * nd + 72.0 * nd + 3000.0)));
+  PetscCall(PetscLogEventEnd(IndLog.jacobian, 0, 0, 0, 0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+void IndAssemblyFinitePointFields(IndAssembly a, PetscInt i, PetscInt q, const PetscReal *h, PetscReal sigma[6], PetscReal e[6], PetscReal *w)
+{
+  IndDisc                disc = a->disc;
+  const IndMaterial     *m    = &a->mats->mat[a->mats->cell_material[i]];
+  const IndPlasticState *st   = (const IndPlasticState *)h;
+  IndLogStrain           ls;
+  PetscReal              H[9], F[9], E[6], ee[6], T[6], S[6];
+
+  IndDiscGradients(disc, i, q, a->G);
+  DeformationGradient(disc->nb, a->G, a->ue, H, F);
+  *w = disc->wdetJ[i * disc->nq + q];
+  if (IndLogStrainFromGradient(H, &ls, E)) { /* a committed state is never inverted; report it, not hide it */
+    for (int k = 0; k < 6; ++k) sigma[k] = e[k] = NAN;
+    return;
+  }
+  /* the committed state is converged: T is elastic in E - eps_p, with no return map to repeat */
+  for (int k = 0; k < 6; ++k) ee[k] = E[k] - st->eps_p[k];
+  IndElasticStress(m->kappa, m->mu, ee, T);
+  IndLogStrainStress(&ls, T, S);
+  IndLogStrainCauchy(F, ls.J, S, sigma);
+  IndLogStrainSpatial(F, &ls, e);
+  *w *= ls.J;
+}

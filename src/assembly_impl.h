@@ -1,0 +1,36 @@
+#pragma once
+/* Private to the assembly (assembly.c: small strain and the shared loops' entry points;
+   assembly_finite.c: total Lagrangian finite strain): cell gathering and the material point. */
+#include "ind_assembly.h"
+#include "ind_elasticity.h"
+
+static inline void GatherCell(IndDisc disc, PetscInt i, const PetscScalar *u, PetscReal *ue)
+{
+  const PetscInt *idx = disc->lidx + i * disc->ndof;
+  for (PetscInt k = 0; k < disc->ndof; ++k) ue[k] = PetscRealPart(u[idx[k]]);
+}
+
+/* The constitutive update of one quadrature point from its committed history old (IND_HISTORY_NVAL
+   values); writes the trial history to trial when not NULL and the tangent to D when not NULL. */
+static inline IndPlasticStatus MaterialResponse(const IndMaterial *m, IndTangent tangent, const PetscReal eps[6], const PetscReal *old, PetscReal *trial, PetscReal sigma[6], PetscReal *D, PetscReal *dp)
+{
+  IndPlasticState  scratch;
+  IndPlasticStatus status;
+
+  *dp = 0.0;
+  if (m->model == IND_MODEL_ELASTIC) {
+    IndElasticStress(m->kappa, m->mu, eps, sigma);
+    if (D) IndElasticTangent(m->kappa, m->mu, D);
+    return IND_PLASTIC_OK;
+  }
+  status = IndPlasticUpdate(&m->plastic, eps, (const IndPlasticState *)old, trial ? (IndPlasticState *)trial : &scratch, sigma, tangent == IND_TANGENT_CONSISTENT ? D : NULL, dp);
+  if (trial) trial[IND_HISTORY_DP] = *dp;
+  if (D && tangent == IND_TANGENT_ELASTIC) IndElasticTangent(m->kappa, m->mu, D);
+  return status;
+}
+
+PetscErrorCode IndAssemblyResidualFinite(IndAssembly assembly, Vec Uloc, Vec Floc);
+PetscErrorCode IndAssemblyJacobianFinite(IndAssembly assembly, Vec Uloc, Mat J);
+/* Cauchy stress and spatial Hencky strain of quadrature point q of cell i (committed history h),
+   with the weight of its current volume. */
+void IndAssemblyFinitePointFields(IndAssembly assembly, PetscInt i, PetscInt q, const PetscReal *h, PetscReal sigma[6], PetscReal e[6], PetscReal *w);
