@@ -22,8 +22,8 @@
 typedef struct {
   PetscReal lm1[3]; /* eigenvalues of C minus 1 (kept apart from 1 for small strains) */
   PetscReal N[9];   /* eigenvectors of C as columns: N[3 i + k] is component i of vector k */
+  PetscReal L[3];   /* ln l_k */
   PetscReal f1[9];  /* f1(l_i, l_j) */
-  PetscReal f2[27]; /* f2(l_i, l_j, l_k) at [9 i + 3 j + k] */
   PetscReal J;      /* det F */
 } IndLogStrain;
 

@@ -13,9 +13,10 @@ PetscErrorCode IndAssemblyCreate(IndDisc disc, IndMaterials mats, IndHistory his
   a->disc    = disc;
   a->mats    = mats;
   a->history = history;
-  a->tangent = IND_TANGENT_CONSISTENT;
+  a->tangent     = IND_TANGENT_CONSISTENT;
+  a->formulation = IND_FORMULATION_FINITE; /* agrees with large-deformation references (doc/finite-strain.md) */
   PetscOptionsBegin(PetscObjectComm((PetscObject)disc->dm), NULL, "Assembly", "Assembly");
-  PetscCall(PetscOptionsEnum("-formulation", "Kinematics: small strain (the paper's model) or finite strain (total Lagrangian, plasticity in logarithmic strain)", "", IndFormulationTypes, (PetscEnum)a->formulation, (PetscEnum *)&a->formulation, NULL));
+  PetscCall(PetscOptionsEnum("-formulation", "Kinematics: finite strain (total Lagrangian, plasticity in logarithmic strain) or small strain (the paper's model)", "", IndFormulationTypes, (PetscEnum)a->formulation, (PetscEnum *)&a->formulation, NULL));
   PetscCall(PetscOptionsEnum("-plastic_tangent", "Tangent of plastic points: consistent (quadratic Newton) or elastic", "", IndTangentTypes, (PetscEnum)a->tangent, (PetscEnum *)&a->tangent, NULL));
   PetscOptionsEnd();
   PetscCall(PetscMalloc6(nd, &a->ue, nd, &a->fe, nd * nd, &a->Ke, disc->nb * 3, &a->G, 6 * nd, &a->DB, 6 * nd, &a->B));

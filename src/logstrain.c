@@ -45,68 +45,84 @@ static inline void OutOfBasis(const PetscReal N[9], const PetscReal At[9], Petsc
 
 void IndSymEigen(const PetscReal S[6], PetscReal lambda[3], PetscReal V[9])
 {
-  PetscReal A[9];
-  PetscReal scale = 0;
+  /* d: diagonal; o[0] = A01, o[1] = A02, o[2] = A12. Rotation (p, q) zeroes the off-diagonal entry
+     o[pq[p][q]] and mixes the other two into each other (Numerical Recipes' symmetric update). */
+  PetscReal       d[3] = {S[0], S[1], S[2]}, o[3] = {S[3], S[5], S[4]};
+  const int       P[3] = {0, 0, 1}, Q[3] = {1, 2, 2}, R3[3] = {2, 1, 0}; /* pair k = (P, Q); R3 the third index */
+  const PetscReal scale = d[0] * d[0] + d[1] * d[1] + d[2] * d[2] + 2.0 * (o[0] * o[0] + o[1] * o[1] + o[2] * o[2]);
 
-  ToMatrix(S, A);
-  for (int i = 0; i < 9; ++i) {
-    V[i] = (i % 4 == 0) ? 1.0 : 0.0;
-    scale += A[i] * A[i];
-  }
+  for (int i = 0; i < 9; ++i) V[i] = (i % 4 == 0) ? 1.0 : 0.0;
   for (int sweep = 0; sweep < 50; ++sweep) {
-    const PetscReal off = A[1] * A[1] + A[2] * A[2] + A[5] * A[5];
+    const PetscReal off = o[0] * o[0] + o[1] * o[1] + o[2] * o[2];
     if (off <= 1e-34 * scale || off == 0) break;
-    for (int p = 0; p < 2; ++p)
-      for (int q = p + 1; q < 3; ++q) {
-        const PetscReal apq = A[3 * p + q];
-        PetscReal       theta, t, c, s;
-        if (apq == 0) continue;
-        theta = (A[3 * q + q] - A[3 * p + p]) / (2.0 * apq);
-        t     = (theta >= 0 ? 1.0 : -1.0) / (PetscAbsReal(theta) + PetscSqrtReal(theta * theta + 1.0));
-        c     = 1.0 / PetscSqrtReal(t * t + 1.0);
-        s     = t * c;
-        /* A <- J^T A J and V <- V J, J the rotation in the (p, q) plane that zeroes A_pq */
-        for (int k = 0; k < 3; ++k) {
-          const PetscReal akp = A[3 * k + p], akq = A[3 * k + q], vkp = V[3 * k + p], vkq = V[3 * k + q];
-          A[3 * k + p] = c * akp - s * akq;
-          A[3 * k + q] = s * akp + c * akq;
-          V[3 * k + p] = c * vkp - s * vkq;
-          V[3 * k + q] = s * vkp + c * vkq;
-        }
-        for (int k = 0; k < 3; ++k) {
-          const PetscReal apk = A[3 * p + k], aqk = A[3 * q + k];
-          A[3 * p + k] = c * apk - s * aqk;
-          A[3 * q + k] = s * apk + c * aqk;
-        }
-        A[3 * p + q] = A[3 * q + p] = 0.0;
+    for (int k = 0; k < 3; ++k) {
+      const int       p = P[k], q = Q[k], r = R3[k];
+      const PetscReal apq = o[k];
+      /* the two other off-diagonal entries: (r, p) and (r, q) */
+      const int       krp = (r == 0 || p == 0) ? (r + p == 1 ? 0 : 1) : 2, krq = (r == 0 || q == 0) ? (r + q == 1 ? 0 : 1) : 2;
+      PetscReal       theta, t, c, s, tau, arp, arq;
+      if (apq == 0) continue;
+      theta = (d[q] - d[p]) / (2.0 * apq);
+      t     = (theta >= 0 ? 1.0 : -1.0) / (PetscAbsReal(theta) + PetscSqrtReal(theta * theta + 1.0));
+      c     = 1.0 / PetscSqrtReal(t * t + 1.0);
+      s     = t * c;
+      tau   = s / (1.0 + c);
+      d[p] -= t * apq;
+      d[q] += t * apq;
+      o[k]   = 0.0;
+      arp    = o[krp];
+      arq    = o[krq];
+      o[krp] = arp - s * (arq + tau * arp);
+      o[krq] = arq + s * (arp - tau * arq);
+      for (int i = 0; i < 3; ++i) {
+        const PetscReal vp = V[3 * i + p], vq = V[3 * i + q];
+        V[3 * i + p] = vp - s * (vq + tau * vp);
+        V[3 * i + q] = vq + s * (vp - tau * vq);
       }
+    }
   }
-  for (int k = 0; k < 3; ++k) lambda[k] = A[4 * k];
+  for (int k = 0; k < 3; ++k) lambda[k] = d[k];
 }
 
-/* First divided difference of f = (1/2) ln at 1 + a and 1 + b, from a and b (exact as a -> b). */
-static inline PetscReal F1(PetscReal a, PetscReal b)
+/* First divided difference of f = (1/2) ln at 1 + a and 1 + b, from a, b and La = ln(1 + a),
+   Lb = ln(1 + b). Close arguments use the series of log1p(x) / x in x = (a - b) / (1 + b) (truncation
+   below 1e-19 for |x| < 1e-2), the others the difference of the logarithms the strain needed anyway:
+   no logarithm is evaluated here. */
+static inline PetscReal F1(PetscReal a, PetscReal b, PetscReal La, PetscReal Lb)
 {
-  const PetscReal d = a - b;
-  if (d == 0) return 0.5 / (1.0 + b);
-  return 0.5 * Log1p(d / (1.0 + b)) / d;
+  const PetscReal d = a - b, x = d / (1.0 + b);
+  if (PetscAbsReal(x) < 1e-2) {
+    PetscReal s = 1.0 / 10.0;
+    for (int n = 9; n >= 1; --n) s = 1.0 / n - x * s;
+    return 0.5 * s / (1.0 + b);
+  }
+  return 0.5 * (La - Lb) / d;
 }
 
-/* Second divided difference, symmetric in its arguments. The difference quotient over the widest
-   pair loses eps / spread to cancellation; below a relative spread of 2e-4 the Taylor series about the
-   mean, f''/2 + f''''/24 h2 (h2 the complete symmetric quadratic of the offsets), is used instead: both
-   are good to about 1e-12 relative there. */
-static inline PetscReal F2(PetscReal a, PetscReal b, PetscReal c)
+/* Second divided difference f2(l_i, l_j, l_k), symmetric in its arguments, from the table of f1. The
+   difference quotient over the widest pair loses eps / spread to cancellation; below a relative spread
+   of 2e-4 the Taylor series about the mean, f''/2 + f''''/24 h2 (h2 the complete symmetric quadratic
+   of the offsets), is used instead: both are good to about 1e-12 relative there. */
+static inline PetscReal F2(const IndLogStrain *ls, int i, int j, int k)
 {
-  PetscReal       hi = PetscMax(a, PetscMax(b, c)), lo = PetscMin(a, PetscMin(b, c)), mid = a + b + c - hi - lo;
-  const PetscReal m  = 1.0 + (a + b + c) / 3.0;
+  const PetscReal *mu = ls->lm1;
+  const PetscReal  m  = 1.0 + (mu[i] + mu[j] + mu[k]) / 3.0;
+  int              idx[3] = {i, j, k};
 
-  if (hi - lo <= 2e-4 * m) {
-    const PetscReal d0 = a + 1.0 - m, d1 = b + 1.0 - m, d2 = c + 1.0 - m;
+  /* sort the three positions by eigenvalue: hi, mid, lo */
+  for (int p = 0; p < 2; ++p)
+    for (int q = 0; q < 2 - p; ++q)
+      if (mu[idx[q]] < mu[idx[q + 1]]) {
+        const int t = idx[q];
+        idx[q]      = idx[q + 1];
+        idx[q + 1]  = t;
+      }
+  if (mu[idx[0]] - mu[idx[2]] <= 2e-4 * m) {
+    const PetscReal d0 = mu[i] + 1.0 - m, d1 = mu[j] + 1.0 - m, d2 = mu[k] + 1.0 - m;
     const PetscReal h2 = d0 * d0 + d1 * d1 + d2 * d2 + d0 * d1 + d0 * d2 + d1 * d2;
     return -0.25 / (m * m) - h2 / (8.0 * m * m * m * m);
   }
-  return (F1(hi, mid) - F1(mid, lo)) / (hi - lo);
+  return (ls->f1[3 * idx[0] + idx[1]] - ls->f1[3 * idx[1] + idx[2]]) / (mu[idx[0]] - mu[idx[2]]);
 }
 
 int IndLogStrainFromGradient(const PetscReal H[9], IndLogStrain *ls, PetscReal E[6])
@@ -127,13 +143,11 @@ int IndLogStrainFromGradient(const PetscReal H[9], IndLogStrain *ls, PetscReal E
   IndSymEigen(Cv, ls->lm1, ls->N);
   for (int k = 0; k < 3; ++k) {
     if (!(ls->lm1[k] > -1.0)) return 1;
-    Em[4 * k] = 0.5 * Log1p(ls->lm1[k]);
+    ls->L[k]  = Log1p(ls->lm1[k]);
+    Em[4 * k] = 0.5 * ls->L[k];
   }
   for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) {
-      ls->f1[3 * i + j] = F1(ls->lm1[i], ls->lm1[j]);
-      for (int k = 0; k < 3; ++k) ls->f2[9 * i + 3 * j + k] = F2(ls->lm1[i], ls->lm1[j], ls->lm1[k]);
-    }
+    for (int j = i; j < 3; ++j) ls->f1[3 * i + j] = ls->f1[3 * j + i] = F1(ls->lm1[i], ls->lm1[j], ls->L[i], ls->L[j]);
   {
     PetscReal Eg[9];
     OutOfBasis(ls->N, Em, Eg);
@@ -153,41 +167,75 @@ void IndLogStrainStress(const IndLogStrain *ls, const PetscReal T[6], PetscReal 
   ToVoigt(Sm, 1.0, S);
 }
 
+/* Voigt pairs: entry v of a Voigt vector is the tensor component (va[v], vb[v]). */
+static const int va[6] = {0, 1, 2, 0, 1, 0}, vb[6] = {0, 1, 2, 1, 2, 2};
+
 void IndLogStrainTangent(const IndLogStrain *ls, const PetscReal T[6], const PetscReal DT[36], PetscReal DS[36])
 {
-  PetscReal Tm[9], Tt[9];
+  const PetscReal *N = ls->N;
+  PetscReal        R[36], Tt[9], DTt[36], M[36], W[36], f2[27];
 
-  ToMatrix(T, Tm);
-  IntoBasis(ls->N, Tm, Tt);
-  for (int col = 0; col < 6; ++col) {
-    PetscReal dEg[6] = {0, 0, 0, 0, 0, 0}, dEgm[9], dCt[9], dEt[9], dEm[9], dEv[6], dTv[6], dTm[9], dTt[9], dSt[9], dSm[9], dS[6];
-
-    dEg[col] = col < 3 ? 1.0 : 0.5; /* a unit engineering strain, as tensor components */
-    ToMatrix(dEg, dEgm);
-    IntoBasis(ls->N, dEgm, dCt);
-    for (int k = 0; k < 9; ++k) {
-      dCt[k] *= 2.0; /* dC = 2 dE_GL */
-      dEt[k] = ls->f1[k] * dCt[k];
+  /* R rotates tensor-Voigt vectors into the eigenbasis (A~ = N^T A N); engineering strains rotate with
+     Re = W R W^-1 = R^-T (W = diag(1,1,1,2,2,2): the contraction of a stress with a strain is
+     invariant), so a tangent D (engineering to tensor) becomes R D R^T there and Re^T D~ Re back. */
+  for (int v = 0; v < 6; ++v)
+    for (int w = 0; w < 6; ++w) {
+      const int a = va[v], b = vb[v], i = va[w], j = vb[w];
+      R[6 * v + w] = i == j ? N[3 * i + a] * N[3 * i + b] : N[3 * i + a] * N[3 * j + b] + N[3 * j + a] * N[3 * i + b];
     }
-    OutOfBasis(ls->N, dEt, dEm);
-    ToVoigt(dEm, 2.0, dEv);
-    for (int r = 0; r < 6; ++r) {
-      dTv[r] = 0;
-      for (int s = 0; s < 6; ++s) dTv[r] += DT[6 * r + s] * dEv[s];
+  {
+    PetscReal Tv[6];
+    for (int v = 0; v < 6; ++v) {
+      Tv[v] = 0;
+      for (int w = 0; w < 6; ++w) Tv[v] += R[6 * v + w] * T[w];
     }
-    ToMatrix(dTv, dTm);
-    IntoBasis(ls->N, dTm, dTt);
-    /* dS~_ab = 2 f1_ab dT~_ab + 2 sum_m f2_abm (dC~_am T~_mb + T~_am dC~_mb) */
-    for (int a = 0; a < 3; ++a)
-      for (int b = 0; b < 3; ++b) {
-        PetscReal v = 2.0 * ls->f1[3 * a + b] * dTt[3 * a + b];
-        for (int m = 0; m < 3; ++m) v += 2.0 * ls->f2[9 * a + 3 * b + m] * (dCt[3 * a + m] * Tt[3 * m + b] + Tt[3 * a + m] * dCt[3 * m + b]);
-        dSt[3 * a + b] = v;
-      }
-    OutOfBasis(ls->N, dSt, dSm);
-    ToVoigt(dSm, 1.0, dS);
-    for (int r = 0; r < 6; ++r) DS[6 * r + col] = dS[r];
+    for (int p = 0; p < 3; ++p)
+      for (int q = 0; q < 3; ++q) Tt[3 * p + q] = Tv[voigt[p][q]];
   }
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      for (int k = 0; k < 3; ++k) f2[9 * i + 3 * j + k] = F2(ls, i, j, k);
+  /* DT~ = R DT R^T */
+  for (int v = 0; v < 6; ++v)
+    for (int w = 0; w < 6; ++w) {
+      PetscReal x = 0;
+      for (int u = 0; u < 6; ++u) x += DT[6 * v + u] * R[6 * w + u];
+      W[6 * v + w] = x;
+    }
+  for (int v = 0; v < 6; ++v)
+    for (int w = 0; w < 6; ++w) {
+      PetscReal x = 0;
+      for (int u = 0; u < 6; ++u) x += R[6 * v + u] * W[6 * u + w];
+      DTt[6 * v + w] = x;
+    }
+  /* In the eigenbasis, per unit engineering strain e_(cd): dE~ = 2 f1_cd e_(cd) (engineering) and
+     dS~_ab = 2 f1_ab dT~_ab + 2 [d_ac f2_abd T~_db + d_ad f2_abc T~_cb + d_bd f2_abc T~_ac + d_bc f2_abd T~_ad],
+     the bracket from T : d2E[dC, .] with dC~ = e_c e_d^T + e_d e_c^T. */
+  for (int v = 0; v < 6; ++v)
+    for (int w = 0; w < 6; ++w) {
+      const int a = va[v], b = vb[v], c = va[w], d = vb[w];
+      PetscReal g = 0;
+      if (a == c) g += f2[9 * a + 3 * b + d] * Tt[3 * d + b];
+      if (a == d) g += f2[9 * a + 3 * b + c] * Tt[3 * c + b];
+      if (b == d) g += f2[9 * a + 3 * b + c] * Tt[3 * a + c];
+      if (b == c) g += f2[9 * a + 3 * b + d] * Tt[3 * a + d];
+      M[6 * v + w] = 4.0 * ls->f1[3 * a + b] * DTt[6 * v + w] * ls->f1[3 * c + d] + 2.0 * g;
+    }
+  /* DS = Re^T M Re */
+  for (int v = 0; v < 6; ++v)
+    for (int w = 0; w < 6; ++w) R[6 * v + w] *= (v < 3 ? 1.0 : 2.0) / (w < 3 ? 1.0 : 2.0);
+  for (int v = 0; v < 6; ++v)
+    for (int w = 0; w < 6; ++w) {
+      PetscReal x = 0;
+      for (int u = 0; u < 6; ++u) x += M[6 * v + u] * R[6 * u + w];
+      W[6 * v + w] = x;
+    }
+  for (int v = 0; v < 6; ++v)
+    for (int w = 0; w < 6; ++w) {
+      PetscReal x = 0;
+      for (int u = 0; u < 6; ++u) x += R[6 * u + v] * W[6 * u + w];
+      DS[6 * v + w] = x;
+    }
 }
 
 void IndLogStrainCauchy(const PetscReal F[9], PetscReal J, const PetscReal S[6], PetscReal sigma[6])

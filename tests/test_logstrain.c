@@ -165,14 +165,18 @@ static void TestDerivatives(unsigned long long *seed)
   const IndPlasticParams law = Law(IND_HARDENING_VOCE, 0.3, 0, 2.0, PETSC_FALSE);
   PetscReal              worst_s = 0, worst_t = 0;
   int                    plastic = 0;
-  for (int t = 0; t < 120; ++t) {
+  for (int t = 0; t < 150; ++t) {
     PetscReal       R[9], Q[9], F[9], s[3], dF[9], S[6], DS[36], T[6], dEg[6], h = 1e-6;
     IndPlasticState old, st;
     memset(&old, 0, sizeof(old));
     for (int k = 0; k < 3; ++k) s[k] = PetscExpReal(0.6 * Rand(seed) - 0.3);
-    if (t % 4 == 1) s[1] = s[0];
-    if (t % 4 == 2) s[0] = s[1] = s[2];
-    if (t % 4 == 3) s[0] = s[1] = s[2] = 1.0 + 1e-7 * Rand(seed);
+    if (t % 5 == 1) s[1] = s[0];
+    if (t % 5 == 2) s[0] = s[1] = s[2];
+    if (t % 5 == 3) s[0] = s[1] = s[2] = 1.0 + 1e-7 * Rand(seed);
+    if (t % 5 == 4) { /* close but distinct: both sides of the series and Taylor switches */
+      s[1] = s[0] * (1 + 1e-4 * Rand(seed));
+      s[2] = s[0] * (1 + 2e-2 * Rand(seed));
+    }
     RandomRotation(seed, R);
     RandomRotation(seed, Q);
     Deformation(R, Q, s, F);
