@@ -43,45 +43,98 @@ static inline void OutOfBasis(const PetscReal N[9], const PetscReal At[9], Petsc
     for (int j = 0; j < 3; ++j) A[3 * i + j] = NA[3 * i] * N[3 * j] + NA[3 * i + 1] * N[3 * j + 1] + NA[3 * i + 2] * N[3 * j + 2];
 }
 
+static inline void Cross(const PetscReal a[3], const PetscReal b[3], PetscReal c[3])
+{
+  c[0] = a[1] * b[2] - a[2] * b[1];
+  c[1] = a[2] * b[0] - a[0] * b[2];
+  c[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+/* Non-iterative, after Scherzinger & Dohrmann (CMAME 197 (2008) 4007): the eigenvalue farthest from
+   the other two comes accurately from the invariants of the deviator (the cosine is taken where it
+   is flat), its eigenvector as the largest cross product of two rows of B - eta I, and the other two
+   from the 2x2 problem in the plane normal to it, by one exact rotation. No case is ill-conditioned:
+   coincident eigenvalues only leave the rotation angle free. */
 void IndSymEigen(const PetscReal S[6], PetscReal lambda[3], PetscReal V[9])
 {
-  /* d: diagonal; o[0] = A01, o[1] = A02, o[2] = A12. Rotation (p, q) zeroes the off-diagonal entry
-     o[pq[p][q]] and mixes the other two into each other (Numerical Recipes' symmetric update). */
-  PetscReal       d[3] = {S[0], S[1], S[2]}, o[3] = {S[3], S[5], S[4]};
-  const int       P[3] = {0, 0, 1}, Q[3] = {1, 2, 2}, R3[3] = {2, 1, 0}; /* pair k = (P, Q); R3 the third index */
-  const PetscReal scale = d[0] * d[0] + d[1] * d[1] + d[2] * d[2] + 2.0 * (o[0] * o[0] + o[1] * o[1] + o[2] * o[2]);
+  const PetscReal m = (S[0] + S[1] + S[2]) / 3.0;
+  const PetscReal B[9] = {S[0] - m, S[3], S[5], S[3], S[1] - m, S[4], S[5], S[4], S[2] - m};
+  const PetscReal scale2 = S[0] * S[0] + S[1] * S[1] + S[2] * S[2] + 2.0 * (S[3] * S[3] + S[4] * S[4] + S[5] * S[5]);
+  PetscReal       J2 = 0.5 * (B[0] * B[0] + B[4] * B[4] + B[8] * B[8]) + B[1] * B[1] + B[2] * B[2] + B[5] * B[5];
+  PetscReal       v1[3] = {0, 0, 1}, u1[3], u2[3], eta1, best = -1;
 
-  for (int i = 0; i < 9; ++i) V[i] = (i % 4 == 0) ? 1.0 : 0.0;
-  for (int sweep = 0; sweep < 50; ++sweep) {
-    const PetscReal off = o[0] * o[0] + o[1] * o[1] + o[2] * o[2];
-    if (off <= 1e-34 * scale || off == 0) break;
+  if (!(J2 > 1e-32 * scale2)) { /* isotropic to round-off */
+    for (int i = 0; i < 9; ++i) V[i] = (i % 4 == 0) ? 1.0 : 0.0;
+    for (int k = 0; k < 3; ++k) lambda[k] = S[k];
+    return;
+  }
+  {
+    const PetscReal J3 = B[0] * (B[4] * B[8] - B[5] * B[7]) - B[1] * (B[3] * B[8] - B[5] * B[6]) + B[2] * (B[3] * B[7] - B[4] * B[6]);
+    const PetscReal r  = 2.0 * PetscSqrtReal(J2 / 3.0);
+    const PetscReal q  = 3.0 / J2;
+    PetscReal       c  = 0.5 * J3 * q * PetscSqrtReal(q);
+    PetscReal       alpha;
+    c     = PetscMin(1.0, PetscMax(-1.0, c));
+    alpha = PetscAcosReal(c) / 3.0;
+    eta1  = alpha < PETSC_PI / 6.0 ? r * PetscCosReal(alpha) : r * PetscCosReal(alpha + 2.0 * PETSC_PI / 3.0);
+  }
+  {
+    const PetscReal rows[3][3] = {{B[0] - eta1, B[1], B[2]}, {B[3], B[4] - eta1, B[5]}, {B[6], B[7], B[8] - eta1}};
+    const int       pr[3][2]   = {{0, 1}, {0, 2}, {1, 2}};
     for (int k = 0; k < 3; ++k) {
-      const int       p = P[k], q = Q[k], r = R3[k];
-      const PetscReal apq = o[k];
-      /* the two other off-diagonal entries: (r, p) and (r, q) */
-      const int       krp = (r == 0 || p == 0) ? (r + p == 1 ? 0 : 1) : 2, krq = (r == 0 || q == 0) ? (r + q == 1 ? 0 : 1) : 2;
-      PetscReal       theta, t, c, s, tau, arp, arq;
-      if (apq == 0) continue;
-      theta = (d[q] - d[p]) / (2.0 * apq);
-      t     = (theta >= 0 ? 1.0 : -1.0) / (PetscAbsReal(theta) + PetscSqrtReal(theta * theta + 1.0));
-      c     = 1.0 / PetscSqrtReal(t * t + 1.0);
-      s     = t * c;
-      tau   = s / (1.0 + c);
-      d[p] -= t * apq;
-      d[q] += t * apq;
-      o[k]   = 0.0;
-      arp    = o[krp];
-      arq    = o[krq];
-      o[krp] = arp - s * (arq + tau * arp);
-      o[krq] = arq + s * (arp - tau * arq);
-      for (int i = 0; i < 3; ++i) {
-        const PetscReal vp = V[3 * i + p], vq = V[3 * i + q];
-        V[3 * i + p] = vp - s * (vq + tau * vp);
-        V[3 * i + q] = vq + s * (vp - tau * vq);
+      PetscReal c[3], n2;
+      Cross(rows[pr[k][0]], rows[pr[k][1]], c);
+      n2 = c[0] * c[0] + c[1] * c[1] + c[2] * c[2];
+      if (n2 > best) {
+        best = n2;
+        for (int d = 0; d < 3; ++d) v1[d] = c[d];
       }
     }
+    best = PetscSqrtReal(best);
+    for (int d = 0; d < 3; ++d) v1[d] /= best;
   }
-  for (int k = 0; k < 3; ++k) lambda[k] = d[k];
+  /* an orthonormal pair spanning the plane normal to v1: start from the axis least aligned with it */
+  {
+    int       k    = 0;
+    PetscReal e[3] = {0, 0, 0}, n;
+    for (int d = 1; d < 3; ++d)
+      if (PetscAbsReal(v1[d]) < PetscAbsReal(v1[k])) k = d;
+    e[k] = 1.0;
+    Cross(v1, e, u1);
+    n = PetscSqrtReal(u1[0] * u1[0] + u1[1] * u1[1] + u1[2] * u1[2]);
+    for (int d = 0; d < 3; ++d) u1[d] /= n;
+    Cross(v1, u1, u2);
+  }
+  {
+    PetscReal Bu1[3], Bu2[3], a, b, d, t = 0, c = 1, s = 0, w[3], x[3];
+    for (int i = 0; i < 3; ++i) {
+      Bu1[i] = B[3 * i] * u1[0] + B[3 * i + 1] * u1[1] + B[3 * i + 2] * u1[2];
+      Bu2[i] = B[3 * i] * u2[0] + B[3 * i + 1] * u2[1] + B[3 * i + 2] * u2[2];
+    }
+    a = u1[0] * Bu1[0] + u1[1] * Bu1[1] + u1[2] * Bu1[2];
+    b = u1[0] * Bu2[0] + u1[1] * Bu2[1] + u1[2] * Bu2[2];
+    d = u2[0] * Bu2[0] + u2[1] * Bu2[1] + u2[2] * Bu2[2];
+    /* one Jacobi rotation (c, s) = (cos, sin) in the (u1, u2) plane diagonalises [[a, b], [b, d]];
+       t = s / c is the smaller root of t^2 + 2 theta t - 1 = 0 */
+    if (b != 0) {
+      const PetscReal theta = (d - a) / (2.0 * b);
+      t = (theta >= 0 ? 1.0 : -1.0) / (PetscAbsReal(theta) + PetscSqrtReal(theta * theta + 1.0));
+      c = 1.0 / PetscSqrtReal(t * t + 1.0);
+      s = t * c;
+    }
+    for (int i = 0; i < 3; ++i) {
+      w[i] = c * u1[i] - s * u2[i];
+      x[i] = s * u1[i] + c * u2[i];
+    }
+    lambda[0] = m + eta1;
+    lambda[1] = m + a - t * b;
+    lambda[2] = m + d + t * b;
+    for (int i = 0; i < 3; ++i) {
+      V[3 * i + 0] = v1[i];
+      V[3 * i + 1] = w[i];
+      V[3 * i + 2] = x[i];
+    }
+  }
 }
 
 /* First divided difference of f = (1/2) ln at 1 + a and 1 + b, from a, b and La = ln(1 + a),
@@ -92,8 +145,9 @@ static inline PetscReal F1(PetscReal a, PetscReal b, PetscReal La, PetscReal Lb)
 {
   const PetscReal d = a - b, x = d / (1.0 + b);
   if (PetscAbsReal(x) < 1e-2) {
-    PetscReal s = 1.0 / 10.0;
-    for (int n = 9; n >= 1; --n) s = 1.0 / n - x * s;
+    static const PetscReal inv[10] = {0, 1.0, 1.0 / 2, 1.0 / 3, 1.0 / 4, 1.0 / 5, 1.0 / 6, 1.0 / 7, 1.0 / 8, 1.0 / 9};
+    PetscReal              s       = 0.1;
+    for (int n = 9; n >= 1; --n) s = inv[n] - x * s;
     return 0.5 * s / (1.0 + b);
   }
   return 0.5 * (La - Lb) / d;
@@ -192,9 +246,14 @@ void IndLogStrainTangent(const IndLogStrain *ls, const PetscReal T[6], const Pet
     for (int p = 0; p < 3; ++p)
       for (int q = 0; q < 3; ++q) Tt[3 * p + q] = Tv[voigt[p][q]];
   }
+  /* symmetric in its three arguments: the 10 distinct values, copied to their permutations */
   for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j)
-      for (int k = 0; k < 3; ++k) f2[9 * i + 3 * j + k] = F2(ls, i, j, k);
+    for (int j = i; j < 3; ++j)
+      for (int k = j; k < 3; ++k) {
+        const PetscReal v = F2(ls, i, j, k);
+        f2[9 * i + 3 * j + k] = f2[9 * i + 3 * k + j] = f2[9 * j + 3 * i + k] = v;
+        f2[9 * j + 3 * k + i] = f2[9 * k + 3 * i + j] = f2[9 * k + 3 * j + i] = v;
+      }
   /* DT~ = R DT R^T */
   for (int v = 0; v < 6; ++v)
     for (int w = 0; w < 6; ++w) {
