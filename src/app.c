@@ -29,7 +29,8 @@ PetscErrorCode IndAppCreate(MPI_Comm comm, IndApp *out)
   PetscCheck(app->contact || app->path.depth_max == 0, comm, PETSC_ERR_ARG_WRONG, "-load_depth needs an indenter: -indenter_type");
   PetscCall(IndHistoryCreate(app->disc, &app->history));
   PetscCall(IndAssemblyCreate(app->disc, app->mats, app->history, &app->assembly));
-  if (app->contact) PetscCall(IndContactSetCurrentAreas(app->contact, app->assembly->formulation == IND_FORMULATION_FINITE));
+  if (app->contact)
+    PetscCall(IndContactSetCurrentAreas(app->contact, app->assembly->formulation == IND_FORMULATION_FINITE));
   PetscCall(IndSolverCreate(app->disc->dm, app->assembly, app->bc, app->contact, app->path.depth_max, &app->solver));
   PetscCall(IndOutputCreate(app->mesh, app->disc, &app->output));
   PetscCall(IndOutputSetContact(app->output, app->contact));

@@ -16,7 +16,10 @@ PetscErrorCode IndAssemblyCreate(IndDisc disc, IndMaterials mats, IndHistory his
   a->tangent     = IND_TANGENT_CONSISTENT;
   a->formulation = IND_FORMULATION_FINITE; /* agrees with large-deformation references (doc/finite-strain.md) */
   PetscOptionsBegin(PetscObjectComm((PetscObject)disc->dm), NULL, "Assembly", "Assembly");
-  PetscCall(PetscOptionsEnum("-formulation", "Kinematics: finite strain (total Lagrangian, plasticity in logarithmic strain) or small strain (the paper's model)", "", IndFormulationTypes, (PetscEnum)a->formulation, (PetscEnum *)&a->formulation, NULL));
+  PetscCall(PetscOptionsEnum("-formulation",
+                             "Kinematics: finite strain (total Lagrangian, plasticity in logarithmic strain) or small "
+                             "strain (the paper's model)",
+                             "", IndFormulationTypes, (PetscEnum)a->formulation, (PetscEnum *)&a->formulation, NULL));
   PetscCall(PetscOptionsEnum("-plastic_tangent", "Tangent of plastic points: consistent (quadratic Newton) or elastic", "", IndTangentTypes, (PetscEnum)a->tangent, (PetscEnum *)&a->tangent, NULL));
   PetscOptionsEnd();
   PetscCall(PetscMalloc6(nd, &a->ue, nd, &a->fe, nd * nd, &a->Ke, disc->nb * 3, &a->G, 6 * nd, &a->DB, 6 * nd, &a->B));
@@ -58,10 +61,6 @@ PetscErrorCode IndAssemblyResidual(IndAssembly a, Vec Uloc, Vec Floc)
   PetscScalar       *f, *htrial;
 
   PetscFunctionBeginUser;
-  if (a->formulation == IND_FORMULATION_FINITE) {
-    PetscCall(IndAssemblyResidualFinite(a, Uloc, Floc));
-    PetscFunctionReturn(PETSC_SUCCESS);
-  }
   PetscCall(PetscLogEventBegin(IndLog.residual, 0, 0, 0, 0));
   a->nfailed = a->nplastic = 0;
   PetscCall(VecZeroEntries(Floc));
@@ -76,18 +75,29 @@ PetscErrorCode IndAssemblyResidual(IndAssembly a, Vec Uloc, Vec Floc)
     GatherCell(disc, i, u, a->ue);
     PetscCall(PetscArrayzero(a->fe, disc->ndof));
     for (PetscInt q = 0; q < nq; ++q) {
-      const PetscReal w = disc->wdetJ[i * nq + q];
-      PetscReal       eps[6], s[6], dp;
+      const PetscReal  w   = disc->wdetJ[i * nq + q];
+      const PetscInt   off = i * stride + q * IND_HISTORY_NVAL;
+      PetscReal        P[9], dp; /* first Piola-Kirchhoff stress; at small strain the (symmetric) stress */
+      IndPlasticStatus status;
 
       IndDiscGradients(disc, i, q, a->G);
-      Strain(nb, a->G, a->ue, eps);
-      if (MaterialResponse(m, a->tangent, eps, hold + i * stride + q * IND_HISTORY_NVAL, htrial + i * stride + q * IND_HISTORY_NVAL, s, NULL, &dp) != IND_PLASTIC_OK) a->nfailed++;
-      else if (dp > 0) a->nplastic++;
+      if (a->formulation == IND_FORMULATION_FINITE)
+        status = IndFinitePointStress(m, a->tangent, nb, a->G, a->ue, hold + off, htrial + off, P, &dp);
+      else {
+        PetscReal eps[6], s[6];
+        Strain(nb, a->G, a->ue, eps);
+        status = MaterialResponse(m, a->tangent, eps, hold + off, htrial + off, s, NULL, &dp);
+        P[0] = s[0], P[1] = s[3], P[2] = s[5], P[3] = s[3], P[4] = s[1], P[5] = s[4], P[6] = s[5], P[7] = s[4];
+        P[8] = s[2];
+      }
+      if (status != IND_PLASTIC_OK) {
+        a->nfailed++;
+        continue;
+      }
+      if (dp > 0) a->nplastic++;
       for (PetscInt b = 0; b < nb; ++b) {
         const PetscReal gx = a->G[3 * b], gy = a->G[3 * b + 1], gz = a->G[3 * b + 2];
-        a->fe[3 * b + 0] += w * (gx * s[0] + gy * s[3] + gz * s[5]);
-        a->fe[3 * b + 1] += w * (gy * s[1] + gx * s[3] + gz * s[4]);
-        a->fe[3 * b + 2] += w * (gz * s[2] + gy * s[4] + gx * s[5]);
+        for (int r = 0; r < 3; ++r) a->fe[3 * b + r] += w * (gx * P[3 * r] + gy * P[3 * r + 1] + gz * P[3 * r + 2]);
       }
       if (a->body_force) {
         PetscReal bf[3];
@@ -139,10 +149,6 @@ PetscErrorCode IndAssemblyJacobian(IndAssembly a, Vec Uloc, Mat J)
   IndMatInsert       ins = J == a->J ? a->insert : NULL; /* cached positions are the matrix's own */
 
   PetscFunctionBeginUser;
-  if (a->formulation == IND_FORMULATION_FINITE) {
-    PetscCall(IndAssemblyJacobianFinite(a, Uloc, J));
-    PetscFunctionReturn(PETSC_SUCCESS);
-  }
   PetscCall(PetscLogEventBegin(IndLog.jacobian, 0, 0, 0, 0));
   if (ins) PetscCall(IndMatInsertBegin(ins, J));
   else PetscCall(MatZeroEntries(J));
@@ -155,13 +161,19 @@ PetscErrorCode IndAssemblyJacobian(IndAssembly a, Vec Uloc, Mat J)
     GatherCell(disc, i, u, a->ue);
     PetscCall(PetscArrayzero(a->Ke, nd * nd));
     for (PetscInt q = 0; q < nq; ++q) {
-      PetscReal eps[6], s[6], D[36], dp;
+      const PetscReal  w   = disc->wdetJ[i * nq + q];
+      const PetscReal *old = hold + i * stride + q * IND_HISTORY_NVAL;
       IndDiscGradients(disc, i, q, a->G);
-      Strain(nb, a->G, a->ue, eps);
-      /* A failed return was already reported by the residual at this displacement, which stops the
+      /* A failed point was already reported by the residual at this displacement, which stops the
          Newton iteration before any Jacobian; its NaN tangent cannot go unnoticed either. */
-      (void)MaterialResponse(m, a->tangent, eps, hold + i * stride + q * IND_HISTORY_NVAL, NULL, s, D, &dp);
-      AddBtDB(nb, a->G, D, disc->wdetJ[i * nq + q], a->DB, a->Ke);
+      if (a->formulation == IND_FORMULATION_FINITE)
+        (void)IndFinitePointStiffness(m, a->tangent, nb, a->G, a->ue, old, w, a->B, a->DB, a->Ke);
+      else {
+        PetscReal eps[6], s[6], D[36], dp;
+        Strain(nb, a->G, a->ue, eps);
+        (void)MaterialResponse(m, a->tangent, eps, old, NULL, s, D, &dp);
+        AddBtDB(nb, a->G, D, w, a->DB, a->Ke);
+      }
     }
     if (ins) PetscCall(IndMatInsertCell(ins, J, i, a->Ke));
     else PetscCall(MatSetValues(J, nd, g, nd, g, a->Ke, ADD_VALUES));

@@ -1,12 +1,13 @@
-/* Total Lagrangian finite strain: residual int G_a . P dV with P = F S, and its exact derivative
-   B^T (dS/dE_GL) B + (G_a . S G_b) I, the second term being the geometric (initial stress) stiffness.
-   The reference configuration's gradients, weights and history layout are those of the small-strain
-   loops; only the kinematics and the material point differ. */
+/* Total Lagrangian finite strain at a quadrature point: the residual's integrand G_a . P with
+   P = F S, and its exact derivative B^T (dS/dE_GL) B + (G_a . S G_b) I, the second term being the
+   geometric (initial stress) stiffness. The cell loops (assembly.c), reference gradients, weights and
+   history layout are the small-strain ones; only the kinematics and the material point differ. */
 #include "assembly_impl.h"
 #include "ind_logstrain.h"
 
 /* The displacement gradient H = sum_a u_a (x) G_a and F = I + H, row-major. */
-static inline void DeformationGradient(PetscInt nb, const PetscReal *G, const PetscReal *u, PetscReal H[9], PetscReal F[9])
+static inline void DeformationGradient(PetscInt nb, const PetscReal *G, const PetscReal *u, PetscReal H[9],
+                                       PetscReal F[9])
 {
   for (int k = 0; k < 9; ++k) H[k] = 0.0;
   for (PetscInt a = 0; a < nb; ++a)
@@ -17,7 +18,9 @@ static inline void DeformationGradient(PetscInt nb, const PetscReal *G, const Pe
 
 /* The material point: the small-strain response at the Hencky strain, mapped to S (and DS). An
    inverted point (det F <= 0) fails like a return map that does not converge: the step is cut. */
-static inline IndPlasticStatus FinitePoint(const IndMaterial *m, IndTangent tangent, const PetscReal H[9], const PetscReal *old, PetscReal *trial, PetscReal S[6], PetscReal *DS, PetscReal *dp)
+static inline IndPlasticStatus FinitePoint(const IndMaterial *m, IndTangent tangent, const PetscReal H[9],
+                                           const PetscReal *old, PetscReal *trial, PetscReal S[6], PetscReal *DS,
+                                           PetscReal *dp)
 {
   IndLogStrain     ls;
   IndPlasticStatus status;
@@ -32,74 +35,33 @@ static inline IndPlasticStatus FinitePoint(const IndMaterial *m, IndTangent tang
   return status;
 }
 
-PetscErrorCode IndAssemblyResidualFinite(IndAssembly a, Vec Uloc, Vec Floc)
+IndPlasticStatus IndFinitePointStress(const IndMaterial *m, IndTangent tangent, PetscInt nb, const PetscReal *G,
+                                      const PetscReal *ue, const PetscReal *old, PetscReal *trial, PetscReal P[9],
+                                      PetscReal *dp)
 {
-  IndDisc            disc = a->disc;
-  const PetscInt     nb = disc->nb, nq = disc->nq, stride = a->history->stride;
-  const PetscScalar *u, *hold;
-  PetscScalar       *f, *htrial;
+  PetscReal        H[9], F[9], S[6];
+  IndPlasticStatus status;
 
-  PetscFunctionBeginUser;
-  PetscCall(PetscLogEventBegin(IndLog.residual, 0, 0, 0, 0));
-  a->nfailed = a->nplastic = 0;
-  PetscCall(VecZeroEntries(Floc));
-  PetscCall(VecGetArrayRead(Uloc, &u));
-  PetscCall(VecGetArray(Floc, &f));
-  PetscCall(VecGetArrayRead(a->history->committed, &hold));
-  PetscCall(VecGetArray(a->history->trial, &htrial));
-  for (PetscInt i = 0; i < disc->ncell; ++i) {
-    const IndMaterial *m   = &a->mats->mat[a->mats->cell_material[i]];
-    const PetscInt    *idx = disc->lidx + i * disc->ndof;
-
-    GatherCell(disc, i, u, a->ue);
-    PetscCall(PetscArrayzero(a->fe, disc->ndof));
-    for (PetscInt q = 0; q < nq; ++q) {
-      const PetscReal  w    = disc->wdetJ[i * nq + q];
-      const PetscInt   off  = i * stride + q * IND_HISTORY_NVAL;
-      PetscReal        H[9], F[9], S[6], P[9], dp;
-      IndPlasticStatus status;
-
-      IndDiscGradients(disc, i, q, a->G);
-      DeformationGradient(nb, a->G, a->ue, H, F);
-      status = FinitePoint(m, a->tangent, H, hold + off, htrial + off, S, NULL, &dp);
-      if (status != IND_PLASTIC_OK) {
-        a->nfailed++;
-        continue;
-      }
-      if (dp > 0) a->nplastic++;
-      /* P = F S = S + H S, summed so that small strains keep their digits */
-      for (int r = 0; r < 3; ++r) {
-        const PetscReal H0 = H[3 * r], H1 = H[3 * r + 1], H2 = H[3 * r + 2];
-        P[3 * r + 0] = H0 * S[0] + H1 * S[3] + H2 * S[5];
-        P[3 * r + 1] = H0 * S[3] + H1 * S[1] + H2 * S[4];
-        P[3 * r + 2] = H0 * S[5] + H1 * S[4] + H2 * S[2];
-      }
-      P[0] += S[0], P[1] += S[3], P[2] += S[5], P[3] += S[3], P[4] += S[1], P[5] += S[4], P[6] += S[5], P[7] += S[4], P[8] += S[2];
-      for (PetscInt b = 0; b < nb; ++b) {
-        const PetscReal gx = a->G[3 * b], gy = a->G[3 * b + 1], gz = a->G[3 * b + 2];
-        for (int r = 0; r < 3; ++r) a->fe[3 * b + r] += w * (P[3 * r] * gx + P[3 * r + 1] * gy + P[3 * r + 2] * gz);
-      }
-      if (a->body_force) {
-        PetscReal bf[3];
-        PetscCall(a->body_force(disc->xq + (i * nq + q) * 3, bf, a->body_ctx));
-        for (PetscInt b = 0; b < nb; ++b)
-          for (int c = 0; c < 3; ++c) a->fe[3 * b + c] -= w * disc->N[q * nb + b] * bf[c];
-      }
-    }
-    for (PetscInt k = 0; k < disc->ndof; ++k) f[idx[k]] += a->fe[k];
+  DeformationGradient(nb, G, ue, H, F);
+  status = FinitePoint(m, tangent, H, old, trial, S, NULL, dp);
+  if (status != IND_PLASTIC_OK) return status;
+  /* P = F S = S + H S, summed so that small strains keep their digits */
+  for (int r = 0; r < 3; ++r) {
+    const PetscReal H0 = H[3 * r], H1 = H[3 * r + 1], H2 = H[3 * r + 2];
+    P[3 * r + 0] = H0 * S[0] + H1 * S[3] + H2 * S[5];
+    P[3 * r + 1] = H0 * S[3] + H1 * S[1] + H2 * S[4];
+    P[3 * r + 2] = H0 * S[5] + H1 * S[4] + H2 * S[2];
   }
-  PetscCall(VecRestoreArrayRead(a->history->committed, &hold));
-  PetscCall(VecRestoreArray(a->history->trial, &htrial));
-  PetscCall(VecRestoreArrayRead(Uloc, &u));
-  PetscCall(VecRestoreArray(Floc, &f));
-  PetscCall(PetscLogFlops(disc->ncell * nq * (1500.0 + 60.0 * nb)));
-  PetscCall(PetscLogEventEnd(IndLog.residual, 0, 0, 0, 0));
-  PetscFunctionReturn(PETSC_SUCCESS);
+  P[0] += S[0], P[1] += S[3], P[2] += S[5];
+  P[3] += S[3], P[4] += S[1], P[5] += S[4];
+  P[6] += S[5], P[7] += S[4], P[8] += S[2];
+  return status;
 }
 
 /* Ke += w (B^T DS B + geometric), B the 6 x nd derivative of the Green-Lagrange strain (engineering
    shears): column 3a+i of B is sym(F^T (e_i (x) G_a)). */
-static inline void AddFiniteStiffness(PetscInt nb, const PetscReal *G, const PetscReal F[9], const PetscReal S[6], const PetscReal DS[36], PetscReal w, PetscReal *B, PetscReal *DB, PetscReal *Ke)
+static inline void AddFiniteStiffness(PetscInt nb, const PetscReal *G, const PetscReal F[9], const PetscReal S[6],
+                                      const PetscReal DS[36], PetscReal w, PetscReal *B, PetscReal *DB, PetscReal *Ke)
 {
   const PetscInt nd = 3 * nb;
 
@@ -132,7 +94,8 @@ static inline void AddFiniteStiffness(PetscInt nb, const PetscReal *G, const Pet
   }
   for (PetscInt a = 0; a < nb; ++a) {
     const PetscReal ga[3] = {G[3 * a], G[3 * a + 1], G[3 * a + 2]};
-    const PetscReal Sg[3] = {S[0] * ga[0] + S[3] * ga[1] + S[5] * ga[2], S[3] * ga[0] + S[1] * ga[1] + S[4] * ga[2], S[5] * ga[0] + S[4] * ga[1] + S[2] * ga[2]};
+    const PetscReal Sg[3] = {S[0] * ga[0] + S[3] * ga[1] + S[5] * ga[2], S[3] * ga[0] + S[1] * ga[1] + S[4] * ga[2],
+                             S[5] * ga[0] + S[4] * ga[1] + S[2] * ga[2]};
     for (PetscInt b = 0; b < nb; ++b) {
       const PetscReal g = w * (Sg[0] * G[3 * b] + Sg[1] * G[3 * b + 1] + Sg[2] * G[3 * b + 2]);
       for (int i = 0; i < 3; ++i) Ke[(3 * a + i) * nd + 3 * b + i] += g;
@@ -140,50 +103,21 @@ static inline void AddFiniteStiffness(PetscInt nb, const PetscReal *G, const Pet
   }
 }
 
-PetscErrorCode IndAssemblyJacobianFinite(IndAssembly a, Vec Uloc, Mat J)
+IndPlasticStatus IndFinitePointStiffness(const IndMaterial *m, IndTangent tangent, PetscInt nb, const PetscReal *G,
+                                         const PetscReal *ue, const PetscReal *old, PetscReal w, PetscReal *B,
+                                         PetscReal *DB, PetscReal *Ke)
 {
-  IndDisc            disc = a->disc;
-  const PetscInt     nb = disc->nb, nq = disc->nq, nd = disc->ndof, stride = a->history->stride;
-  const PetscScalar *u, *hold;
-  IndMatInsert       ins = J == a->J ? a->insert : NULL;
+  PetscReal        H[9], F[9], S[6], DS[36], dp;
+  IndPlasticStatus status;
 
-  PetscFunctionBeginUser;
-  PetscCall(PetscLogEventBegin(IndLog.jacobian, 0, 0, 0, 0));
-  if (ins) PetscCall(IndMatInsertBegin(ins, J));
-  else PetscCall(MatZeroEntries(J));
-  PetscCall(VecGetArrayRead(Uloc, &u));
-  PetscCall(VecGetArrayRead(a->history->committed, &hold));
-  for (PetscInt i = 0; i < disc->ncell; ++i) {
-    const IndMaterial *m = &a->mats->mat[a->mats->cell_material[i]];
-    const PetscInt    *g = disc->gidx + i * nd;
-
-    GatherCell(disc, i, u, a->ue);
-    PetscCall(PetscArrayzero(a->Ke, nd * nd));
-    for (PetscInt q = 0; q < nq; ++q) {
-      PetscReal H[9], F[9], S[6], DS[36], dp;
-      IndDiscGradients(disc, i, q, a->G);
-      DeformationGradient(nb, a->G, a->ue, H, F);
-      /* a failed point was reported by the residual at this displacement, which stops the Newton
-         iteration before any Jacobian */
-      if (FinitePoint(m, a->tangent, H, hold + i * stride + q * IND_HISTORY_NVAL, NULL, S, DS, &dp) != IND_PLASTIC_OK) continue;
-      AddFiniteStiffness(nb, a->G, F, S, DS, disc->wdetJ[i * nq + q], a->B, a->DB, a->Ke);
-    }
-    if (ins) PetscCall(IndMatInsertCell(ins, J, i, a->Ke));
-    else PetscCall(MatSetValues(J, nd, g, nd, g, a->Ke, ADD_VALUES));
-  }
-  PetscCall(VecRestoreArrayRead(a->history->committed, &hold));
-  PetscCall(VecRestoreArrayRead(Uloc, &u));
-  if (ins) PetscCall(IndMatInsertEnd(ins, J));
-  else {
-    PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
-    PetscCall(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));
-  }
-  PetscCall(PetscLogFlops(disc->ncell * nq * (12.0 * nd * nd + 72.0 * nd + 3000.0)));
-  PetscCall(PetscLogEventEnd(IndLog.jacobian, 0, 0, 0, 0));
-  PetscFunctionReturn(PETSC_SUCCESS);
+  DeformationGradient(nb, G, ue, H, F);
+  status = FinitePoint(m, tangent, H, old, NULL, S, DS, &dp);
+  if (status == IND_PLASTIC_OK) AddFiniteStiffness(nb, G, F, S, DS, w, B, DB, Ke);
+  return status;
 }
 
-void IndAssemblyFinitePointFields(IndAssembly a, PetscInt i, PetscInt q, const PetscReal *h, PetscReal sigma[6], PetscReal e[6], PetscReal *w)
+void IndAssemblyFinitePointFields(IndAssembly a, PetscInt i, PetscInt q, const PetscReal *h, PetscReal sigma[6],
+                                  PetscReal e[6], PetscReal *w)
 {
   IndDisc                disc = a->disc;
   const IndMaterial     *m    = &a->mats->mat[a->mats->cell_material[i]];

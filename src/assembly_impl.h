@@ -12,7 +12,9 @@ static inline void GatherCell(IndDisc disc, PetscInt i, const PetscScalar *u, Pe
 
 /* The constitutive update of one quadrature point from its committed history old (IND_HISTORY_NVAL
    values); writes the trial history to trial when not NULL and the tangent to D when not NULL. */
-static inline IndPlasticStatus MaterialResponse(const IndMaterial *m, IndTangent tangent, const PetscReal eps[6], const PetscReal *old, PetscReal *trial, PetscReal sigma[6], PetscReal *D, PetscReal *dp)
+static inline IndPlasticStatus MaterialResponse(const IndMaterial *m, IndTangent tangent, const PetscReal eps[6],
+                                                const PetscReal *old, PetscReal *trial, PetscReal sigma[6],
+                                                PetscReal *D, PetscReal *dp)
 {
   IndPlasticState  scratch;
   IndPlasticStatus status;
@@ -23,14 +25,23 @@ static inline IndPlasticStatus MaterialResponse(const IndMaterial *m, IndTangent
     if (D) IndElasticTangent(m->kappa, m->mu, D);
     return IND_PLASTIC_OK;
   }
-  status = IndPlasticUpdate(&m->plastic, eps, (const IndPlasticState *)old, trial ? (IndPlasticState *)trial : &scratch, sigma, tangent == IND_TANGENT_CONSISTENT ? D : NULL, dp);
+  status = IndPlasticUpdate(&m->plastic, eps, (const IndPlasticState *)old, trial ? (IndPlasticState *)trial : &scratch,
+                            sigma, tangent == IND_TANGENT_CONSISTENT ? D : NULL, dp);
   if (trial) trial[IND_HISTORY_DP] = *dp;
   if (D && tangent == IND_TANGENT_ELASTIC) IndElasticTangent(m->kappa, m->mu, D);
   return status;
 }
 
-PetscErrorCode IndAssemblyResidualFinite(IndAssembly assembly, Vec Uloc, Vec Floc);
-PetscErrorCode IndAssemblyJacobianFinite(IndAssembly assembly, Vec Uloc, Mat J);
+/* Finite strain at one quadrature point (assembly_finite.c), from the physical gradients G (nb x 3)
+   and the cell displacements ue: the first Piola-Kirchhoff stress P (3x3, row-major), writing the
+   trial history when trial is not NULL; and Ke += w (B^T dS/dE_GL B + geometric stiffness). */
+IndPlasticStatus IndFinitePointStress(const IndMaterial *m, IndTangent tangent, PetscInt nb, const PetscReal *G,
+                                      const PetscReal *ue, const PetscReal *old, PetscReal *trial, PetscReal P[9],
+                                      PetscReal *dp);
+IndPlasticStatus IndFinitePointStiffness(const IndMaterial *m, IndTangent tangent, PetscInt nb, const PetscReal *G,
+                                         const PetscReal *ue, const PetscReal *old, PetscReal w, PetscReal *B,
+                                         PetscReal *DB, PetscReal *Ke);
 /* Cauchy stress and spatial Hencky strain of quadrature point q of cell i (committed history h),
    with the weight of its current volume. */
-void IndAssemblyFinitePointFields(IndAssembly assembly, PetscInt i, PetscInt q, const PetscReal *h, PetscReal sigma[6], PetscReal e[6], PetscReal *w);
+void IndAssemblyFinitePointFields(IndAssembly assembly, PetscInt i, PetscInt q, const PetscReal *h, PetscReal sigma[6],
+                                  PetscReal e[6], PetscReal *w);

@@ -160,7 +160,9 @@ static PetscErrorCode SurfaceNodes(IndMesh mesh, IndDisc disc, const char surfac
       PetscCall(DMPlexRestoreTransitiveClosure(dm, f[i], PETSC_TRUE, &ncl, &closure));
       PetscCall(DMPlexVecGetClosure(cdm, cs, X, f[i], &nc, &xc));
       PetscCheck(nc == 9 || nc == 12, PETSC_COMM_SELF, PETSC_ERR_SUP, "Contact surface '%s': faces must be flat triangles or quadrilaterals with straight edges", surface);
-      PetscCheck(3 * nv == nc, PETSC_COMM_SELF, PETSC_ERR_PLIB, "Contact surface '%s': face with %" PetscInt_FMT " vertices and %" PetscInt_FMT " coordinates", surface, nv, nc);
+      PetscCheck(3 * nv == nc, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+                 "Contact surface '%s': face with %" PetscInt_FMT " vertices and %" PetscInt_FMT " coordinates",
+                 surface, nv, nc);
       for (PetscInt k = 0; k < nc; ++k) vx[k] = PetscRealPart(xc[k]) + uv[k];
       PetscCall(DMPlexVecRestoreClosure(cdm, cs, X, f[i], &nc, &xc));
       PetscCall(FaceAreas(dm, s, f[i], vx, nc / 3, disc->degree, a));

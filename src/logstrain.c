@@ -40,7 +40,8 @@ static inline void OutOfBasis(const PetscReal N[9], const PetscReal At[9], Petsc
   for (int i = 0; i < 3; ++i)
     for (int l = 0; l < 3; ++l) NA[3 * i + l] = N[3 * i] * At[l] + N[3 * i + 1] * At[3 + l] + N[3 * i + 2] * At[6 + l];
   for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) A[3 * i + j] = NA[3 * i] * N[3 * j] + NA[3 * i + 1] * N[3 * j + 1] + NA[3 * i + 2] * N[3 * j + 2];
+    for (int j = 0; j < 3; ++j)
+      A[3 * i + j] = NA[3 * i] * N[3 * j] + NA[3 * i + 1] * N[3 * j + 1] + NA[3 * i + 2] * N[3 * j + 2];
 }
 
 static inline void Cross(const PetscReal a[3], const PetscReal b[3], PetscReal c[3])
@@ -69,7 +70,8 @@ void IndSymEigen(const PetscReal S[6], PetscReal lambda[3], PetscReal V[9])
     return;
   }
   {
-    const PetscReal J3 = B[0] * (B[4] * B[8] - B[5] * B[7]) - B[1] * (B[3] * B[8] - B[5] * B[6]) + B[2] * (B[3] * B[7] - B[4] * B[6]);
+    const PetscReal J3 = B[0] * (B[4] * B[8] - B[5] * B[7]) - B[1] * (B[3] * B[8] - B[5] * B[6]) +
+                         B[2] * (B[3] * B[7] - B[4] * B[6]);
     const PetscReal r  = 2.0 * PetscSqrtReal(J2 / 3.0);
     const PetscReal q  = 3.0 / J2;
     PetscReal       c  = 0.5 * J3 * q * PetscSqrtReal(q);
@@ -305,7 +307,8 @@ void IndLogStrainCauchy(const PetscReal F[9], PetscReal J, const PetscReal S[6],
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) FS[3 * i + j] = F[3 * i] * Sm[j] + F[3 * i + 1] * Sm[3 + j] + F[3 * i + 2] * Sm[6 + j];
   for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) s[3 * i + j] = (FS[3 * i] * F[3 * j] + FS[3 * i + 1] * F[3 * j + 1] + FS[3 * i + 2] * F[3 * j + 2]) / J;
+    for (int j = 0; j < 3; ++j)
+      s[3 * i + j] = (FS[3 * i] * F[3 * j] + FS[3 * i + 1] * F[3 * j + 1] + FS[3 * i + 2] * F[3 * j + 2]) / J;
   ToVoigt(s, 1.0, sigma);
 }
 

@@ -36,7 +36,8 @@ static int FromF(const PetscReal F[9], IndLogStrain *ls, PetscReal E[6])
 }
 
 /* One finite-strain material point: S (and DS when not NULL) at F from the history old. */
-static int Point(const IndPlasticParams *m, const PetscReal F[9], const IndPlasticState *old, IndPlasticState *st, PetscReal S[6], PetscReal DS[36], PetscReal T[6])
+static int Point(const IndPlasticParams *m, const PetscReal F[9], const IndPlasticState *old, IndPlasticState *st,
+                 PetscReal S[6], PetscReal DS[36], PetscReal T[6])
 {
   IndLogStrain ls;
   PetscReal    E[6], D[36], dp, Tl[6];
@@ -78,7 +79,9 @@ static void Deformation(const PetscReal R[9], const PetscReal Q[9], const PetscR
 {
   PetscReal U[9];
   for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) U[3 * i + j] = Q[3 * i] * s[0] * Q[3 * j] + Q[3 * i + 1] * s[1] * Q[3 * j + 1] + Q[3 * i + 2] * s[2] * Q[3 * j + 2];
+    for (int j = 0; j < 3; ++j)
+      U[3 * i + j] = Q[3 * i] * s[0] * Q[3 * j] + Q[3 * i + 1] * s[1] * Q[3 * j + 1] +
+                     Q[3 * i + 2] * s[2] * Q[3 * j + 2];
   MatMul(R, U, F);
 }
 
@@ -89,6 +92,8 @@ static PetscReal MaxAbs(const PetscReal *a, int n)
   return m;
 }
 
+static const PetscReal identity[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+
 static void TestEigen(unsigned long long *seed)
 {
   PetscReal worst = 0, worst_o = 0;
@@ -97,8 +102,7 @@ static void TestEigen(unsigned long long *seed)
     if (t % 3 == 1) s[1] = s[0];                 /* a double eigenvalue */
     if (t % 3 == 2) s[1] = s[2] = s[0] * (1 + 1e-9); /* nearly triple */
     RandomRotation(seed, Q);
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) Am[3 * i + j] = Q[3 * i] * s[0] * Q[3 * j] + Q[3 * i + 1] * s[1] * Q[3 * j + 1] + Q[3 * i + 2] * s[2] * Q[3 * j + 2];
+    Deformation(identity, Q, s, Am);
     A[0] = Am[0], A[1] = Am[4], A[2] = Am[8], A[3] = Am[1], A[4] = Am[5], A[5] = Am[2];
     IndSymEigen(A, lam, V);
     for (int i = 0; i < 3; ++i)
@@ -254,7 +258,8 @@ static void TestObjectivity(unsigned long long *seed)
     (void)FromF(WF, &ls2, E2);
     IndLogStrainCauchy(F, ls1.J, S1, sig1);
     IndLogStrainCauchy(WF, ls2.J, S2, sig2);
-    for (int k = 0; k < 13; ++k) worst_h = PetscMax(worst_h, PetscAbsReal(((PetscReal *)&st1)[k] - ((PetscReal *)&st2)[k]));
+    for (int k = 0; k < 13; ++k)
+      worst_h = PetscMax(worst_h, PetscAbsReal(((PetscReal *)&st1)[k] - ((PetscReal *)&st2)[k]));
     /* W sigma1 W^T */
     {
       const int v[3][3] = {{0, 3, 5}, {3, 1, 4}, {5, 4, 2}};
@@ -316,7 +321,8 @@ static void TestUniaxial(void)
    (exx, eyy, exy) tensor components. */
 static void ShearHencky(PetscReal g, PetscReal e[3])
 {
-  const PetscReal c11 = 1, c22 = 1 + g * g, c12 = g, m = 0.5 * (c11 + c22), d = PetscSqrtReal(0.25 * (c11 - c22) * (c11 - c22) + c12 * c12);
+  const PetscReal c11 = 1, c22 = 1 + g * g, c12 = g, m = 0.5 * (c11 + c22);
+  const PetscReal d = PetscSqrtReal(0.25 * (c11 - c22) * (c11 - c22) + c12 * c12);
   const PetscReal l1 = m + d, l2 = m - d, k = 0.25 * PetscLogReal(l1 / l2) / d; /* (f(l1) - f(l2)) / (l1 - l2) */
   /* E = a I + k (C - m I) with a = (f(l1) + f(l2)) / 2 = 0 since l1 l2 = 1 */
   e[0] = k * (c11 - m), e[1] = k * (c22 - m), e[2] = k * c12;
@@ -356,7 +362,8 @@ static void TestSimpleShear(void)
       PetscReal kk[4][2], g0 = i * hstep;
       for (int s = 0; s < 4; ++s) {
         const PetscReal gs = g0 + (s == 0 ? 0 : s == 3 ? hstep : 0.5 * hstep), c = s == 0 ? 0 : s == 3 ? 1 : 0.5;
-        PetscReal       ys[2] = {y[0] + (s ? c * hstep * kk[s - 1][0] : 0), y[1] + (s ? c * hstep * kk[s - 1][1] : 0)}, ea[3], eb[3], dE[2], nrm;
+        PetscReal       ys[2] = {y[0] + (s ? c * hstep * kk[s - 1][0] : 0), y[1] + (s ? c * hstep * kk[s - 1][1] : 0)};
+        PetscReal       ea[3], eb[3], dE[2], nrm;
         ShearHencky(gs + 1e-6, ea);
         ShearHencky(gs - 1e-6, eb);
         dE[0] = (ea[0] - eb[0]) / 2e-6, dE[1] = (ea[2] - eb[2]) / 2e-6;
@@ -387,7 +394,8 @@ static void TestSimpleShear(void)
       err[run] = PetscMax(PetscAbsReal(T[0] - 2 * mu * y[0]), PetscAbsReal(T[3] - 2 * mu * y[1])) / pp.R0;
     }
     Report("perfectly plastic simple shear to g = 2: T against the continuum flow, 4000 steps (/R0)", err[1], 2e-3);
-    Report("  ... and first order in the step: error(1000) / error(4000) - 4", PetscAbsReal(err[0] / err[1] - 4.0), 0.5);
+    Report("  ... and first order in the step: error(1000) / error(4000) - 4", PetscAbsReal(err[0] / err[1] - 4.0),
+           0.5);
   }
 }
 
