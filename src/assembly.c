@@ -117,7 +117,8 @@ PetscErrorCode IndAssemblyResidual(IndAssembly a, Vec Uloc, Vec Floc)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Ke += w B^T D B, using the sparsity of B: column 3b+c of B holds the gradient of N_b. */
+/* Ke += w B^T D B on and above the diagonal, using the sparsity of B: column 3b+c of B holds the
+   gradient of N_b. D is symmetric (elastic and consistent plastic tangents alike), so is Ke. */
 static inline void AddBtDB(PetscInt nb, const PetscReal *G, const PetscReal D[36], PetscReal w, PetscReal *DB, PetscReal *Ke)
 {
   const PetscInt nd = 3 * nb;
@@ -130,14 +131,13 @@ static inline void AddBtDB(PetscInt nb, const PetscReal *G, const PetscReal D[36
       DB[r * nd + 3 * b + 2] = Dr[2] * gz + Dr[4] * gy + Dr[5] * gx;
     }
   }
+  /* the upper triangle only: the cell loop mirrors it */
   for (PetscInt a = 0; a < nb; ++a) {
     const PetscReal gx = w * G[3 * a], gy = w * G[3 * a + 1], gz = w * G[3 * a + 2];
     PetscReal      *K0 = Ke + (3 * a) * nd, *K1 = K0 + nd, *K2 = K1 + nd;
-    for (PetscInt k = 0; k < nd; ++k) {
-      K0[k] += gx * DB[0 * nd + k] + gy * DB[3 * nd + k] + gz * DB[5 * nd + k];
-      K1[k] += gy * DB[1 * nd + k] + gx * DB[3 * nd + k] + gz * DB[4 * nd + k];
-      K2[k] += gz * DB[2 * nd + k] + gy * DB[4 * nd + k] + gx * DB[5 * nd + k];
-    }
+    for (PetscInt k = 3 * a; k < nd; ++k) K0[k] += gx * DB[0 * nd + k] + gy * DB[3 * nd + k] + gz * DB[5 * nd + k];
+    for (PetscInt k = 3 * a + 1; k < nd; ++k) K1[k] += gy * DB[1 * nd + k] + gx * DB[3 * nd + k] + gz * DB[4 * nd + k];
+    for (PetscInt k = 3 * a + 2; k < nd; ++k) K2[k] += gz * DB[2 * nd + k] + gy * DB[4 * nd + k] + gx * DB[5 * nd + k];
   }
 }
 
@@ -175,6 +175,8 @@ PetscErrorCode IndAssemblyJacobian(IndAssembly a, Vec Uloc, Mat J)
         AddBtDB(nb, a->G, D, w, a->DB, a->Ke);
       }
     }
+    for (PetscInt r = 1; r < nd; ++r)
+      for (PetscInt c = 0; c < r; ++c) a->Ke[r * nd + c] = a->Ke[c * nd + r];
     if (ins) PetscCall(IndMatInsertCell(ins, J, i, a->Ke));
     else PetscCall(MatSetValues(J, nd, g, nd, g, a->Ke, ADD_VALUES));
   }

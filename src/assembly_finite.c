@@ -58,8 +58,8 @@ IndPlasticStatus IndFinitePointStress(const IndMaterial *m, IndTangent tangent, 
   return status;
 }
 
-/* Ke += w (B^T DS B + geometric), B the 6 x nd derivative of the Green-Lagrange strain (engineering
-   shears): column 3a+i of B is sym(F^T (e_i (x) G_a)). */
+/* Ke += w (B^T DS B + geometric) on and above the diagonal, B the 6 x nd derivative of the
+   Green-Lagrange strain (engineering shears): column 3a+i of B is sym(F^T (e_i (x) G_a)). */
 static inline void AddFiniteStiffness(PetscInt nb, const PetscReal *G, const PetscReal F[9], const PetscReal S[6],
                                       const PetscReal DS[36], PetscReal w, PetscReal *B, PetscReal *DB, PetscReal *Ke)
 {
@@ -84,19 +84,20 @@ static inline void AddFiniteStiffness(PetscInt nb, const PetscReal *G, const Pet
       for (int s = 0; s < 6; ++s) v += DS[6 * r + s] * B[s * nd + k];
       DB[r * nd + k] = w * v;
     }
+  /* the upper triangle only: the cell loop mirrors it */
   for (PetscInt j = 0; j < nd; ++j) {
     PetscReal *Kj = Ke + j * nd;
     for (int r = 0; r < 6; ++r) {
       const PetscReal  brj = B[r * nd + j];
       const PetscReal *DBr = DB + r * nd;
-      for (PetscInt k = 0; k < nd; ++k) Kj[k] += brj * DBr[k];
+      for (PetscInt k = j; k < nd; ++k) Kj[k] += brj * DBr[k];
     }
   }
   for (PetscInt a = 0; a < nb; ++a) {
     const PetscReal ga[3] = {G[3 * a], G[3 * a + 1], G[3 * a + 2]};
     const PetscReal Sg[3] = {S[0] * ga[0] + S[3] * ga[1] + S[5] * ga[2], S[3] * ga[0] + S[1] * ga[1] + S[4] * ga[2],
                              S[5] * ga[0] + S[4] * ga[1] + S[2] * ga[2]};
-    for (PetscInt b = 0; b < nb; ++b) {
+    for (PetscInt b = a; b < nb; ++b) {
       const PetscReal g = w * (Sg[0] * G[3 * b] + Sg[1] * G[3 * b + 1] + Sg[2] * G[3 * b + 2]);
       for (int i = 0; i < 3; ++i) Ke[(3 * a + i) * nd + 3 * b + i] += g;
     }
