@@ -35,8 +35,9 @@ struct _p_IndAssembly {
   IndMatInsert insert; /* and its cached insertion (NULL: MatSetValues) */
 };
 
-/* Per local cell, volume averages over the committed history (after IndHistoryCommit); at finite
-   strain over the current volume, of the Cauchy stress and the spatial Hencky strain. */
+/* Per local cell, volume averages over the committed history (after IndHistoryCommit). At finite
+   strain the Cauchy stress and the spatial Hencky strain are averaged over the current volume, the
+   material's state (p, back stress, yielding) over the reference volume. */
 typedef struct {
   PetscReal *stress;      /* 6 per cell, Voigt, GPa */
   PetscReal *strain;      /* 6 per cell, engineering shears */

@@ -253,12 +253,13 @@ PetscErrorCode IndAssemblyCellAverages(IndAssembly a, Vec Uloc, IndCellFields *o
   PetscCall(VecGetArrayRead(a->history->committed, &hist));
   for (PetscInt i = 0; i < disc->ncell; ++i) {
     const IndMaterial *m   = &a->mats->mat[a->mats->cell_material[i]];
-    PetscReal          vol = 0, savg[6] = {0}, eavg[6] = {0}, pavg = 0, xavg = 0, yavg = 0;
+    PetscReal          vol = 0, vol0 = 0, savg[6] = {0}, eavg[6] = {0}, pavg = 0, xavg = 0, yavg = 0;
     GatherCell(disc, i, u, a->ue);
     for (PetscInt q = 0; q < nq; ++q) {
       const PetscReal *h = hist + i * stride + q * IND_HISTORY_NVAL;
       const IndPlasticState *st = (const IndPlasticState *)h;
-      PetscReal        eps[6], ee[6], s[6], w = disc->wdetJ[i * nq + q];
+      const PetscReal  w0 = disc->wdetJ[i * nq + q];
+      PetscReal        eps[6], ee[6], s[6], w = w0;
       if (a->formulation == IND_FORMULATION_FINITE) IndAssemblyFinitePointFields(a, i, q, h, s, eps, &w);
       else {
         IndDiscGradients(disc, i, q, a->G);
@@ -268,22 +269,25 @@ PetscErrorCode IndAssemblyCellAverages(IndAssembly a, Vec Uloc, IndCellFields *o
         for (int k = 0; k < 6; ++k) ee[k] = eps[k] - st->eps_p[k];
         IndElasticStress(m->kappa, m->mu, ee, s);
       }
+      /* stress and strain over the current volume (w: at finite strain w0 J); the material's own
+         state (p, back stress, yielding) over the material, i.e. the reference volume */
       vol += w;
+      vol0 += w0;
       for (int k = 0; k < 6; ++k) {
         savg[k] += w * s[k];
         eavg[k] += w * eps[k];
       }
-      pavg += w * st->p;
-      xavg += w * IndVonMises(st->x);
-      yavg += h[IND_HISTORY_DP] > 0 ? w : 0.0;
+      pavg += w0 * st->p;
+      xavg += w0 * IndVonMises(st->x);
+      yavg += h[IND_HISTORY_DP] > 0 ? w0 : 0.0;
     }
     for (int k = 0; k < 6; ++k) {
       out->stress[6 * i + k] = savg[k] / vol;
       out->strain[6 * i + k] = eavg[k] / vol;
     }
-    out->plastic[i]     = pavg / vol;
-    out->back_stress[i] = xavg / vol;
-    out->yielding[i]    = yavg / vol;
+    out->plastic[i]     = pavg / vol0;
+    out->back_stress[i] = xavg / vol0;
+    out->yielding[i]    = yavg / vol0;
   }
   PetscCall(VecRestoreArrayRead(a->history->committed, &hist));
   PetscCall(VecRestoreArrayRead(Uloc, &u));
