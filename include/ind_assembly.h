@@ -21,18 +21,18 @@ extern const char *const IndFormulationTypes[];
 
 typedef struct _p_IndAssembly *IndAssembly;
 struct _p_IndAssembly {
-  IndDisc      disc;
-  IndMaterials mats;
-  IndHistory   history;
-  IndTangent     tangent; /* -plastic_tangent: elastic only for comparisons, it loses quadratic Newton */
-  IndFormulation formulation;
-  IndVectorFn  body_force;
-  void        *body_ctx;
-  PetscInt     nfailed;  /* local quadrature points whose return map failed, last residual */
-  PetscInt     nplastic; /* local quadrature points yielding (dp > 0), last residual */
-  PetscReal   *ue, *fe, *Ke, *G, *DB, *B; /* per-cell work arrays, allocated once */
-  Mat          J;      /* the matrix made by IndAssemblyCreateMatrix (borrowed) */
-  IndMatInsert insert; /* and its cached insertion (NULL: MatSetValues) */
+  IndDisc        disc;
+  IndMaterials   mats;
+  IndHistory     history;
+  IndTangent     tangent;     /* -plastic_tangent: elastic only for comparisons, it loses quadratic Newton */
+  IndFormulation formulation; /* -formulation */
+  IndVectorFn    body_force;
+  void          *body_ctx;
+  PetscInt       nfailed;  /* local quadrature points whose return map failed, last residual */
+  PetscInt       nplastic; /* local quadrature points yielding (dp > 0), last residual */
+  PetscReal     *ue, *fe, *Ke, *G, *DB, *B; /* per-cell work arrays, allocated once */
+  Mat            J;      /* the matrix made by IndAssemblyCreateMatrix (borrowed) */
+  IndMatInsert   insert; /* and its cached insertion (NULL: MatSetValues) */
 };
 
 /* Per local cell, volume averages over the committed history (after IndHistoryCommit). At finite

@@ -14,7 +14,7 @@ cp "$tmp/plastic_block/indent.h5" "$top/tests/reference/plastic_block.h5"
 echo "wrote tests/reference/plastic_block.h5"
 # The coarse paper case: options as in tests/CMakeLists.txt (PAPER_COARSE_OPTS); mesh made by gmsh.
 "$build/indent" -options_file "$top/inputs/berkovich.opts" -mesh_file "$top/inputs/berkovich_half.geo" \
-  -mesh_geo_parameters h_tip=20,h_far=400 -load_depth 30 -load_steps 3 -load_unload_steps 50 \
+  -mesh_geo_parameters h_tip=20,h_far=400 -load_depth 30 -load_steps 6 -load_unload_steps 50 \
   -contact_uzawa_rtol 1e-9 -snes_rtol 1e-10 -ksp_rtol 1e-12 -quiet -output_dir "$tmp/berkovich_paper"
 /usr/bin/python3 "$top/scripts/slim-reference.py" "$tmp/berkovich_paper/indent.h5" "$top/tests/reference/berkovich_paper.h5" \
   displacement von_mises plastic_strain contact_pressure

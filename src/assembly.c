@@ -87,8 +87,9 @@ PetscErrorCode IndAssemblyResidual(IndAssembly a, Vec Uloc, Vec Floc)
         PetscReal eps[6], s[6];
         Strain(nb, a->G, a->ue, eps);
         status = MaterialResponse(m, a->tangent, eps, hold + off, htrial + off, s, NULL, &dp);
-        P[0] = s[0], P[1] = s[3], P[2] = s[5], P[3] = s[3], P[4] = s[1], P[5] = s[4], P[6] = s[5], P[7] = s[4];
-        P[8] = s[2];
+        P[0] = s[0], P[1] = s[3], P[2] = s[5];
+        P[3] = s[3], P[4] = s[1], P[5] = s[4];
+        P[6] = s[5], P[7] = s[4], P[8] = s[2];
       }
       if (status != IND_PLASTIC_OK) {
         a->nfailed++;

@@ -226,10 +226,28 @@ void IndLogStrainStress(const IndLogStrain *ls, const PetscReal T[6], PetscReal 
 /* Voigt pairs: entry v of a Voigt vector is the tensor component (va[v], vb[v]). */
 static const int va[6] = {0, 1, 2, 0, 1, 0}, vb[6] = {0, 1, 2, 1, 2, 2};
 
+/* out = L A L^T for 6x6 matrices (row-major). */
+static void Sandwich(const PetscReal L[36], const PetscReal A[36], PetscReal out[36])
+{
+  PetscReal W[36];
+  for (int v = 0; v < 6; ++v)
+    for (int w = 0; w < 6; ++w) {
+      PetscReal x = 0;
+      for (int u = 0; u < 6; ++u) x += A[6 * v + u] * L[6 * w + u];
+      W[6 * v + w] = x;
+    }
+  for (int v = 0; v < 6; ++v)
+    for (int w = 0; w < 6; ++w) {
+      PetscReal x = 0;
+      for (int u = 0; u < 6; ++u) x += L[6 * v + u] * W[6 * u + w];
+      out[6 * v + w] = x;
+    }
+}
+
 void IndLogStrainTangent(const IndLogStrain *ls, const PetscReal T[6], const PetscReal DT[36], PetscReal DS[36])
 {
   const PetscReal *N = ls->N;
-  PetscReal        R[36], Tt[9], DTt[36], M[36], W[36], f2[27];
+  PetscReal        R[36], ReT[36], Tt[9], DTt[36], M[36], f2[27];
 
   /* R rotates tensor-Voigt vectors into the eigenbasis (A~ = N^T A N); engineering strains rotate with
      Re = W R W^-1 = R^-T (W = diag(1,1,1,2,2,2): the contraction of a stress with a strain is
@@ -256,19 +274,7 @@ void IndLogStrainTangent(const IndLogStrain *ls, const PetscReal T[6], const Pet
         f2[9 * i + 3 * j + k] = f2[9 * i + 3 * k + j] = f2[9 * j + 3 * i + k] = v;
         f2[9 * j + 3 * k + i] = f2[9 * k + 3 * i + j] = f2[9 * k + 3 * j + i] = v;
       }
-  /* DT~ = R DT R^T */
-  for (int v = 0; v < 6; ++v)
-    for (int w = 0; w < 6; ++w) {
-      PetscReal x = 0;
-      for (int u = 0; u < 6; ++u) x += DT[6 * v + u] * R[6 * w + u];
-      W[6 * v + w] = x;
-    }
-  for (int v = 0; v < 6; ++v)
-    for (int w = 0; w < 6; ++w) {
-      PetscReal x = 0;
-      for (int u = 0; u < 6; ++u) x += R[6 * v + u] * W[6 * u + w];
-      DTt[6 * v + w] = x;
-    }
+  Sandwich(R, DT, DTt);
   /* In the eigenbasis, per unit engineering strain e_(cd): dE~ = 2 f1_cd e_(cd) (engineering) and
      dS~_ab = 2 f1_ab dT~_ab + 2 [d_ac f2_abd T~_db + d_ad f2_abc T~_cb + d_bd f2_abc T~_ac + d_bc f2_abd T~_ad],
      the bracket from T : d2E[dC, .] with dC~ = e_c e_d^T + e_d e_c^T. */
@@ -282,21 +288,10 @@ void IndLogStrainTangent(const IndLogStrain *ls, const PetscReal T[6], const Pet
       if (b == c) g += f2[9 * a + 3 * b + d] * Tt[3 * a + d];
       M[6 * v + w] = 4.0 * ls->f1[3 * a + b] * DTt[6 * v + w] * ls->f1[3 * c + d] + 2.0 * g;
     }
-  /* DS = Re^T M Re */
+  /* DS = Re^T M Re, Re = W R W^-1 */
   for (int v = 0; v < 6; ++v)
-    for (int w = 0; w < 6; ++w) R[6 * v + w] *= (v < 3 ? 1.0 : 2.0) / (w < 3 ? 1.0 : 2.0);
-  for (int v = 0; v < 6; ++v)
-    for (int w = 0; w < 6; ++w) {
-      PetscReal x = 0;
-      for (int u = 0; u < 6; ++u) x += M[6 * v + u] * R[6 * u + w];
-      W[6 * v + w] = x;
-    }
-  for (int v = 0; v < 6; ++v)
-    for (int w = 0; w < 6; ++w) {
-      PetscReal x = 0;
-      for (int u = 0; u < 6; ++u) x += R[6 * u + v] * W[6 * u + w];
-      DS[6 * v + w] = x;
-    }
+    for (int w = 0; w < 6; ++w) ReT[6 * v + w] = R[6 * w + v] * (w < 3 ? 1.0 : 2.0) / (v < 3 ? 1.0 : 2.0);
+  Sandwich(ReT, M, DS);
 }
 
 void IndLogStrainCauchy(const PetscReal F[9], PetscReal J, const PetscReal S[6], PetscReal sigma[6])

@@ -7,6 +7,7 @@
 #include <string.h>
 #include "ind_logstrain.h"
 #include "ind_plasticity.h"
+#include "ind_elasticity.h"
 #include "unit_report.h"
 
 static const PetscReal YOUNG = 70.0, POISSON = 0.3;
@@ -15,8 +16,7 @@ static IndPlasticParams Law(IndHardening law, PetscReal R0, PetscReal h, PetscRe
 {
   IndPlasticParams m;
   memset(&m, 0, sizeof(m));
-  m.kappa        = YOUNG / (3.0 * (1.0 - 2.0 * POISSON));
-  m.mu           = YOUNG / (2.0 * (1.0 + POISSON));
+  IndElasticModuli(YOUNG, POISSON, &m.kappa, &m.mu);
   m.hardening    = law;
   m.R0           = R0;
   m.Rs           = 2.0 * R0;
