@@ -236,9 +236,13 @@ def do_run(spec, runs, out, args):
             rc = stop.proc.wait()
             stop.proc = None
         secs = time.time() - t0
+        ckpt = os.path.join(d, "checkpoint.h5")
+        # PETSc's error code 75 (PETSC_ERR_ARG_INCOMP) is also an exit status of 75: only a checkpoint
+        # written by this run means that it stopped to be continued.
+        fresh = os.path.exists(ckpt) and os.path.getmtime(ckpt) >= t0 - 1
         if rc == 0:
             print(f"{tag}: finished in {secs:.1f} s  {summary_line(d)}", flush=True)
-        elif rc == EX_TEMPFAIL:
+        elif rc == EX_TEMPFAIL and fresh:
             print(f"{tag}: checkpoint written after {secs:.1f} s; run the same command to continue", flush=True)
             return EX_TEMPFAIL
         else:

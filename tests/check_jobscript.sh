@@ -7,6 +7,8 @@
 # and exit 0 or a failure does not; the resubmission cap; SIGUSR1 to the batch shell reaches the
 # launcher; a cancelled job (SIGTERM) checkpoints without requeueing; under PBS, timeout signals
 # the launcher before the wall time read from qstat.
+# check_jobscript.sh REPO WORKDIR --real INDENT MPIEXEC OPTIONS...: the Slurm script around the real
+# indent (srun is MPIEXEC -n 2; OPTIONS, a tiny case, go in INDENT_EXTRA_OPTIONS).
 set -u
 repo=$1
 work=$2
@@ -22,13 +24,17 @@ done
 
 cat > "$stubs/launcher" << 'EOF'
 #!/bin/bash
-# Stub MPI launcher: one argument per line in launch_args, then as STUB_MODE says.
+# Stub MPI launcher: one argument per line in launch_args, then as STUB_MODE says. Exit 75 comes
+# with a new checkpoint in the -output_dir, as indent writes it; error75 is an error with code 75.
 printf '%s\n' "$@" > "$STUB_DIR/launch_args"
 echo launched >> "$STUB_DIR/calls"
+out=$(grep -A1 -x -- -output_dir "$STUB_DIR/launch_args" | tail -n 1)
 case $STUB_MODE in
+  exit75) echo new > "$out/checkpoint.h5"; exit 75 ;;
+  error75) exit 75 ;;
   exit*) exit "${STUB_MODE#exit}" ;;
   wait)
-    trap 'echo USR1 >> "$STUB_DIR/signals"; exit 75' USR1
+    trap 'echo USR1 >> "$STUB_DIR/signals"; echo new > "$out/checkpoint.h5"; exit 75' USR1
     touch "$STUB_DIR/ready"
     for _ in $(seq 300); do sleep 0.1; done
     echo "stub launcher: no SIGUSR1 within 30 s" >&2
@@ -64,7 +70,11 @@ reset() {
   rm -rf "$out" "$work"/{launch_args,calls,signals,ready,job.out}
   mkdir -p "$out"
   case $1 in
-    checkpoint) echo fake > "$out/checkpoint.h5"; echo "step,t" > "$out/load_displacement.csv" ;;
+    checkpoint)
+      echo old > "$out/checkpoint.h5"
+      touch -d '1 hour ago' "$out/checkpoint.h5"
+      echo "step,t" > "$out/load_displacement.csv"
+      ;;
     finished) printf '{\n  "P_max_uN": 13.7,\n  "status": "finished"\n}\n' > "$out/summary.json" ;;
     partial) echo "step,t" > "$out/load_displacement.csv" ;;
     empty) ;;
@@ -83,6 +93,53 @@ slurm() {
 
 has_arg_pair() { grep -qx -- "$1" "$work/launch_args" && grep -A1 -x -- "$1" "$work/launch_args" | tail -n 1 | grep -qx -- "$2"; }
 called() { grep -q -- "$1" "$work/calls" 2> /dev/null; }
+
+# --real: the Slurm script around the real indent, srun standing for mpiexec -n 2. SIGUSR1 to the batch
+# shell after two steps: checkpoint, status 75, requeue; the requeued job continues with -restart
+# and finishes; a third start does nothing.
+if [[ ${3:-} == --real ]]; then
+  indent=$4
+  mpiexec=$(command -v "$5") || { echo "FAIL: no $5"; exit 1; }
+  shift 5
+  printf '#!/bin/bash\nexec %q -n 2 "$@"\n' "$mpiexec" > "$stubs/srun"
+  real=("${slurmenv[@]}" INDENT_EXE="$indent" INDENT_EXTRA_OPTIONS="$*")
+  reset empty
+  "${real[@]}" bash "$slurm_script" > "$work/job.out" 2>&1 &
+  job=$!
+  for _ in $(seq 1200); do
+    [[ -f $out/load_displacement.csv && $(wc -l < "$out/load_displacement.csv") -ge 3 ]] && break
+    kill -0 "$job" 2> /dev/null || break
+    sleep 0.1
+  done
+  kill -0 "$job" 2> /dev/null || fail "real: the job ended before its second step"
+  kill -USR1 "$job"
+  wait "$job"
+  rc=$?
+  ((rc == 0)) || fail "real: job exit status $rc after SIGUSR1, expected 0 (requeued)"
+  grep -q "stopped by SIGUSR1" "$work/job.out" || fail "real: indent did not report the signal"
+  [[ -f $out/checkpoint.h5 ]] || fail "real: no checkpoint.h5"
+  called "scontrol requeue 4242" || fail "real: not requeued"
+  steps=$(($(wc -l < "$out/load_displacement.csv") - 1))
+  echo "ok: SIGUSR1 through the batch shell and srun: checkpoint after step $steps, requeued"
+  rm -f "$work/calls"
+  "${real[@]}" SLURM_RESTART_COUNT=1 bash "$slurm_script" > "$work/job.out" 2>&1
+  rc=$?
+  ((rc == 0)) || fail "real: the requeued job's exit status $rc"
+  grep -q -- "-restart $out" "$work/job.out" || fail "real: the requeued job did not pass -restart"
+  grep -q "continuing from" "$work/job.out" || fail "real: indent did not continue from the checkpoint"
+  grep -Eq '"status": *"finished"' "$out/summary.json" 2> /dev/null || fail "real: no finished summary.json"
+  [[ ! -e $out/checkpoint.h5 ]] || fail "real: the finished run kept its checkpoint"
+  called scontrol && fail "real: requeued a finished run"
+  echo "ok: the requeued job continued and finished ($(($(wc -l < "$out/load_displacement.csv") - 1)) steps)"
+  "${real[@]}" SLURM_RESTART_COUNT=2 bash "$slurm_script" > "$work/job.out" 2>&1
+  rc=$?
+  if ((rc != 0)) || ! grep -q "nothing to do" "$work/job.out"; then
+    fail "real: a finished run was started again"
+  fi
+  echo "ok: a third start does nothing"
+  echo "all real job-script checks passed"
+  exit 0
+fi
 
 # 1. New run, exit 0: no -restart, the options and -output_dir passed on, no requeue.
 reset empty
@@ -140,6 +197,15 @@ rc=$?
 called "sbatch --export=ALL,INDENT_RESUBMIT_COUNT=3 $slurm_script" || fail "sbatch fallback: no sbatch with the count 3"
 echo "ok: sbatch when requeue fails"
 
+# 6b. Exit 75 without a new checkpoint (PETSc's error code 75, e.g. a restart refused): no requeue.
+reset checkpoint
+slurm STUB_MODE=error75
+rc=$?
+((rc == 75)) || fail "error 75: exit status $rc, expected 75"
+called scontrol && fail "error 75: requeued without a new checkpoint"
+called sbatch && fail "error 75: resubmitted without a new checkpoint"
+echo "ok: status 75 without a new checkpoint not requeued"
+
 # 7. A finished run is not started again.
 reset finished
 slurm STUB_MODE=exit3
@@ -183,7 +249,8 @@ pbs() {
 }
 reset checkpoint
 start=$SECONDS
-pbs PBS_JOBID=77.server STUB_WALLTIME=00:00:03 INDENT_SIGNAL_MARGIN=1 STUB_MODE=wait
+pbs PBS_JOBID=77.server STUB_WALLTIME=00:00:03 INDENT_SIGNAL_MARGIN=1 STUB_MODE=wait \
+  INDENT_EXTRA_OPTIONS="-load_depth 10 -mesh_geo_parameters h_tip=60,h_far=600"
 rc=$?
 grep -qx USR1 "$work/signals" 2> /dev/null || fail "pbs: timeout did not send SIGUSR1 to the launcher"
 ((SECONDS - start <= 10)) || fail "pbs: the signal came after $((SECONDS - start)) s"
@@ -192,6 +259,9 @@ has_arg_pair -n 3 || fail "pbs: mpiexec not given -n 3"
 has_arg_pair -restart "$out" || fail "pbs: no -restart with a checkpoint present"
 called "qsub -v INDENT_RESUBMIT_COUNT=1" || fail "pbs: no qsub with the count 1"
 called "$pbs_script" || fail "pbs: qsub of another script"
+has_arg_pair -mesh_geo_parameters h_tip=60,h_far=600 || fail "pbs: INDENT_EXTRA_OPTIONS not passed to indent"
+called ",INDENT_EXTRA_OPTIONS='-load_depth 10 -mesh_geo_parameters h_tip=60,h_far=600'" ||
+  fail "pbs: INDENT_EXTRA_OPTIONS not passed on to the next job, quoted for its commas"
 echo "ok: PBS timeout signal, qsub again"
 
 # 11. PBS cap, and the wall time taken from the script's own #PBS line when qstat cannot tell.

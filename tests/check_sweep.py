@@ -11,9 +11,9 @@ and stopped runs get no command, -restart and -output_overwrite; --slurm and --p
 the ranks and the options (read back through bash); values holding commas; a changed --base is
 refused. collect: fabricated summary.json files (finished, another status, a checkpoint only, no
 output) become one CSV, rows in numeric order of the varied values, the same on a second call.
-run: a real sweep of two tiny runs, then the same command again, which must start no indent; then
-a third value, interrupted by SIGUSR1 after its first steps (checkpoint, status 75) and continued
-by the next --run with -restart.
+run: a real sweep of two tiny runs (-load_steps 2 and 3), then the same command again, which must
+start no indent; then a third value (-load_steps 12), interrupted by SIGUSR1 to the sweep after its
+second step (checkpoint, status 75) and continued by the next --run with -restart.
 """
 import argparse
 import csv
@@ -214,19 +214,19 @@ def read_json(path):
 
 
 def test_run(work):
-    help_text = subprocess.run([ARGS.indent, "-help", "-output_dir", os.path.join(work, "help")],
+    help_text = subprocess.run([ARGS.indent, *ARGS.options, "-help", "-output_dir", os.path.join(work, "help")],
                                capture_output=True, text=True).stdout
     if not check("checkpoint_every" in help_text, "indent -help lists -checkpoint_every"):
         return
     out = os.path.join(work, "sw")
     base = ["--base", shlex.join(ARGS.options), "--out", out, "--np", "2", "--indent", ARGS.indent,
             "--mpiexec", ARGS.mpiexec]
-    vary2 = ["--vary", "contact_friction=0,0.2"]
+    vary2 = ["--vary", "load_steps=2,3"]
     t0 = time.time()
     p = sweep([*base, *vary2, "--run", "--collect"], work, ok=False)
     print(p.stdout + p.stderr)
     check(p.returncode == 0, f"first --run exits 0 ({time.time() - t0:.1f} s)")
-    names = ["contact_friction=0", "contact_friction=0.2"]
+    names = ["load_steps=2", "load_steps=3"]
     mtimes = {}
     for name in names:
         sj = os.path.join(out, name, "summary.json")
@@ -242,11 +242,11 @@ def test_run(work):
         sj = os.path.join(out, name, "summary.json")
         check(os.path.isfile(sj) and os.stat(sj).st_mtime_ns == mtimes.get(name), f"{name}: not run again")
         log = open(os.path.join(out, name, "sweep-run.log")).read()
-        check(log.count("# ") == 1 if log.startswith("# ") else False, f"{name}: indent started once")
+        check(sum(line.startswith("# ") for line in log.splitlines()) == 1, f"{name}: indent started once")
 
-    # A third value, interrupted after its first steps and continued.
-    vary3 = ["--vary", "contact_friction=0,0.2,0.4"]
-    new = os.path.join(out, "contact_friction=0.4")
+    # A third value with more steps, interrupted after its first ones and continued.
+    vary3 = ["--vary", "load_steps=2,3,12"]
+    new = os.path.join(out, "load_steps=12")
     proc = subprocess.Popen([sys.executable, ARGS.sweep, *base, *vary3, "--run"], cwd=work,
                             stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
     curve = os.path.join(new, "load_displacement.csv")
@@ -271,7 +271,7 @@ def test_run(work):
           "its second start has -restart")
     check(os.path.isfile(s) and read_json(s).get("status") == "finished", "the continued run finished")
     rows = list(csv.reader(open(os.path.join(out, "summary.csv"))))
-    check([r[0] for r in rows[1:]] == ["contact_friction=0", "contact_friction=0.2", "contact_friction=0.4"]
+    check([r[0] for r in rows[1:]] == ["load_steps=2", "load_steps=3", "load_steps=12"]
           and all(r[2] == "finished" for r in rows[1:]), "summary.csv: three finished runs")
 
 
@@ -283,8 +283,10 @@ def main():
     ap.add_argument("--workdir", required=True)
     ap.add_argument("--indent")
     ap.add_argument("--mpiexec", default="mpiexec")
-    ap.add_argument("options", nargs="*", help="run: the tiny case's options")
-    ARGS = ap.parse_args()
+    argv = sys.argv[1:]
+    cut = argv.index("--") if "--" in argv else len(argv)
+    ARGS = ap.parse_args(argv[:cut])
+    ARGS.options = argv[cut + 1:]   # run: the tiny case's options
     ARGS.sweep = os.path.abspath(ARGS.sweep)
     work = os.path.abspath(ARGS.workdir)
     shutil.rmtree(work, ignore_errors=True)

@@ -8,7 +8,8 @@
 #   RUN_DIR          directory the run starts in (relative paths in the options are relative to it)
 #   INDENT_EXE       the indent executable
 #   OUTPUT_DIR       indent's -output_dir, where the checkpoint is looked for
-#   INDENT_OPTIONS   array: indent's options (without -output_dir and -restart)
+#   INDENT_OPTIONS   array: indent's options (without -output_dir and -restart); the environment's
+#                    INDENT_EXTRA_OPTIONS (split at blanks) come after them, so they override them
 #   LAUNCHER         array: the MPI launcher and its arguments (srun; mpiexec -n N)
 #   MAX_RESUBMITS    resubmissions allowed in all (Slurm counts requeues in SLURM_RESTART_COUNT)
 #   OVERWRITE_PARTIAL  1: a run directory holding an unfinished run without checkpoint is started
@@ -141,10 +142,16 @@ _indent_resubmit_slurm() {
 _indent_resubmit_pbs() {
   local count=$1 vars name
   # qsub passes no environment by default: the count and the INDENT_* settings exported at
-  # submission (qsub -v cannot carry values holding commas).
+  # submission (a value holding commas goes in single quotes, as qsub -v wants).
   vars="INDENT_RESUBMIT_COUNT=$((count + 1))"
   while read -r name; do
-    [[ $name == INDENT_RESUBMIT_COUNT || ${!name} == *,* ]] || vars+=",$name=${!name}"
+    if [[ $name == INDENT_RESUBMIT_COUNT ]]; then
+      continue
+    elif [[ ${!name} == *,* ]]; then
+      vars+=",$name='${!name}'"
+    else
+      vars+=",$name=${!name}"
+    fi
   done < <(compgen -e | grep '^INDENT_')
   indent_log "qsub $JOB_SCRIPT (resubmission $((count + 1)) of at most $MAX_RESUBMITS)"
   qsub -v "$vars" "$JOB_SCRIPT"
@@ -152,8 +159,8 @@ _indent_resubmit_pbs() {
 
 # indent_job_main slurm|pbs: the whole job. Its status is indent's, except 0 after a resubmission.
 indent_job_main() {
-  local flavor=$1 state rc count limit walltime
-  local -a extra=() cmd=()
+  local flavor=$1 state rc count limit walltime start
+  local -a extra=() cmd=() more=()
   cd "$RUN_DIR" || return 1
   state=$(indent_run_state "$OUTPUT_DIR")
   case $state in
@@ -176,7 +183,8 @@ indent_job_main() {
       ;;
     new) indent_log "starting a new run in $OUTPUT_DIR" ;;
   esac
-  cmd=("${LAUNCHER[@]}" "$INDENT_EXE" "${INDENT_OPTIONS[@]}" -output_dir "$OUTPUT_DIR" "${extra[@]}")
+  read -r -a more <<< "${INDENT_EXTRA_OPTIONS:-}"
+  cmd=("${LAUNCHER[@]}" "$INDENT_EXE" "${INDENT_OPTIONS[@]}" "${more[@]}" -output_dir "$OUTPUT_DIR" "${extra[@]}")
   if [[ $flavor == pbs ]]; then
     # PBS sends no warning before the limit: timeout sends SIGUSR1 to the launcher SIGNAL_MARGIN
     # seconds before it (--foreground: to the launcher only, which passes it on to every rank
@@ -194,6 +202,7 @@ indent_job_main() {
     fi
   fi
   indent_log "running: ${cmd[*]}"
+  start=$(date +%s)
   indent_run_forwarding "${cmd[@]}"
   rc=$?
   if ((rc == 0)); then
@@ -202,6 +211,13 @@ indent_job_main() {
   fi
   if ((rc != INDENT_EX_TEMPFAIL)); then
     indent_log "indent failed with exit status $rc: not resubmitting"
+    return "$rc"
+  fi
+  # PETSc's error code 75 (PETSC_ERR_ARG_INCOMP) is also an exit status of 75: only a checkpoint
+  # written by this run means that the run stopped to be continued.
+  if ! [[ -f $OUTPUT_DIR/checkpoint.h5 ]] || (($(stat -c %Y "$OUTPUT_DIR/checkpoint.h5") < start)); then
+    indent_log "exit status 75 but no new checkpoint: an error (PETSc's code 75: incompatible arguments)," \
+      "not resubmitting"
     return "$rc"
   fi
   if ((INDENT_CANCELLED && !INDENT_GOT_WARNING)); then
