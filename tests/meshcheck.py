@@ -2,10 +2,14 @@
 check_kick.py): their common arguments, checked, and one checked run."""
 import argparse
 import os
+import re
 import shlex
 import subprocess
 import sys
 import time
+
+# a block PETSc's -malloc_dump reports unfreed at PetscFinalize: "[ 0] 1008 bytes IndFoo() at src/foo.c:12"
+UNFREED = re.compile(r"^\[ *\d+\] ?\d+ bytes \S+\(\) (at|line) ")
 
 
 def bad_input(prog, msg):
@@ -51,6 +55,8 @@ def run_indent(prog, args, options, out):
     except OSError as e:
         bad_input(prog, f"cannot run {args.mpiexec}: {e}")
     wall = time.time() - start
+    # the output is shown only on failure; PETSc's -malloc_dump report (exit 0) is for ctest to judge
+    print("".join(line + "\n" for line in proc.stdout.splitlines() if UNFREED.search(line)), end="")
     unused = "WARNING! There are" in proc.stdout
     if proc.returncode != 0 or unused:
         print(proc.stdout, end="")
