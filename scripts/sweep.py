@@ -21,8 +21,9 @@ checkpoint (SIGUSR1 to mpiexec) and stop the sweep with status 75: run the same 
 --slurm, --pbs: write OUT/jobs/RUN.slurm.sh or .pbs.sh from scripts/jobs/*-paper-case.sh (they
 checkpoint before the time limit and resubmit themselves); nothing is submitted.
 --collect: OUT/summary.csv, one row per run in the order of the varied values: run, the varied
-options, status (finished, interrupted: a checkpoint, stopped: output without summary or checkpoint,
-not run; or summary.json's own status), then every scalar of summary.json.
+options, status (finished; interrupted: a checkpoint; incomplete: output without summary or
+checkpoint; failed: started by --run, no output; not run; or summary.json's own status), then
+every scalar of summary.json.
 --dry-run: prints the commands (and the CSV) and writes nothing.
 """
 import argparse
@@ -153,7 +154,7 @@ def read_summary(d):
 
 
 def run_state(d):
-    """finished | interrupted | stopped | not run, or summary.json's own status."""
+    """finished | interrupted | incomplete | failed | not run, or summary.json's own status."""
     s = read_summary(d)
     if s is not None:
         # A summary without status comes from an indent without checkpoints, which wrote it at the end.
@@ -163,7 +164,9 @@ def run_state(d):
     if os.path.exists(os.path.join(d, "checkpoint.h5")):
         return "interrupted"
     if any(os.path.exists(os.path.join(d, f)) for f in RUN_FILES):
-        return "stopped"
+        return "incomplete"    # failed or killed without checkpoint, or still running
+    if os.path.exists(os.path.join(d, LOG)):
+        return "failed"        # started by --run, but it wrote nothing
     return "not run"
 
 
@@ -231,8 +234,11 @@ def do_run(spec, runs, out, args):
             log.write(f"# {time.strftime('%Y-%m-%d %H:%M:%S')} in {spec['cwd']}: {shlex.join(cmd)}\n")
             log.flush()
             # Its own session: a Ctrl-C reaches only the sweep, which passes it on as SIGUSR1.
-            stop.proc = subprocess.Popen(cmd, cwd=spec["cwd"], stdout=log, stderr=subprocess.STDOUT,
-                                         start_new_session=True)
+            try:
+                stop.proc = subprocess.Popen(cmd, cwd=spec["cwd"], stdout=log, stderr=subprocess.STDOUT,
+                                             start_new_session=True)
+            except OSError as e:
+                raise SystemExit(f"{tag}: cannot start {cmd[0]}: {e}")
             rc = stop.proc.wait()
             stop.proc = None
         secs = time.time() - t0

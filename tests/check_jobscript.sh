@@ -91,7 +91,10 @@ slurm() {
   "${slurmenv[@]}" "$@" bash "$slurm_script" > "$work/job.out" 2>&1
 }
 
-has_arg_pair() { grep -qx -- "$1" "$work/launch_args" && grep -A1 -x -- "$1" "$work/launch_args" | tail -n 1 | grep -qx -- "$2"; }
+# The launcher got option $1 followed by value $2.
+has_arg_pair() {
+  grep -qx -- "$1" "$work/launch_args" && grep -A1 -x -- "$1" "$work/launch_args" | tail -n 1 | grep -qx -- "$2"
+}
 called() { grep -q -- "$1" "$work/calls" 2> /dev/null; }
 
 # --real: the Slurm script around the real indent, srun standing for mpiexec -n 2. SIGUSR1 to the batch
@@ -236,7 +239,8 @@ for _ in $(seq 100); do [[ -e $work/ready ]] && break; sleep 0.1; done
 kill -TERM "$job"
 wait "$job"
 rc=$?
-grep -qx USR1 "$work/signals" 2> /dev/null || fail "cancel: SIGTERM to the batch shell did not reach the launcher as SIGUSR1"
+grep -qx USR1 "$work/signals" 2> /dev/null ||
+  fail "cancel: SIGTERM to the batch shell did not reach the launcher as SIGUSR1"
 ((rc == 75)) || fail "cancel: exit status $rc, expected 75"
 called scontrol && fail "cancel: requeued a cancelled job"
 echo "ok: cancelled job checkpoints, not requeued"

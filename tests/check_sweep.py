@@ -105,7 +105,7 @@ def test_dry_run(work):
     check(runs[names[1]][1] == "interrupted" and c1[-2:] == ["-restart", d1] and "-output_overwrite" not in c1,
           f"checkpoint: -restart {d1}")
     c2 = runs[names[2]][2] or []
-    check(runs[names[2]][1] == "stopped" and c2[-1] == "-output_overwrite" and "-restart" not in c2,
+    check(runs[names[2]][1] == "incomplete" and c2[-1] == "-output_overwrite" and "-restart" not in c2,
           "output without checkpoint: -output_overwrite")
     c3 = runs[names[3]][2] or []
     check(c3[-2:] == ["-output_dir", os.path.join(out, names[3])], "not run: a plain command")
@@ -200,12 +200,17 @@ def test_collect(work):
     check(open(path).read() == text, "a second --collect writes the same file")
     p = sweep(["--out", out, "--collect", "--dry-run"], work)
     check(p.stdout == text, "--collect --dry-run prints the CSV")
-    # A new value: the new run is listed, not run, in its place.
+    # A new value: the new runs are listed in their place, one not run, one that --run started and
+    # that wrote nothing (only the sweep's log).
     sweep(["--base", "-options_file inputs/berkovich.opts", "--vary", "contact_friction=0.3,0.1,0.2",
-           "--vary", "load_steps=12,6", "--out", out, "--collect"], work)
+           "--vary", "load_steps=12,6", "--out", out], work)
+    with open(os.path.join(out, "contact_friction=0.2,load_steps=12", "sweep-run.log"), "w") as f:
+        f.write("# mpiexec ...\nindent: error: -film_yield must be > 0\n")
+    sweep(["--out", out, "--collect"], work)
     rows = list(csv.reader(open(path)))
     check([r[0] for r in rows[1:]][2:4] == ["contact_friction=0.2,load_steps=6", "contact_friction=0.2,load_steps=12"]
-          and rows[3][3] == "not run", "runs added later sorted in, listed as not run")
+          and rows[3][3] == "not run" and rows[4][3] == "failed",
+          f"runs added later sorted in, not run or failed: {[r[3] for r in rows[3:5]]}")
 
 
 def read_json(path):

@@ -77,7 +77,8 @@ indent_pbs_walltime() {
   elif [[ -n ${PBS_WALLTIME:-} ]]; then
     w=$PBS_WALLTIME
   elif [[ -n ${PBS_JOBID:-} ]] && command -v qstat > /dev/null 2>&1; then
-    w=$(qstat -f "$PBS_JOBID" 2> /dev/null | sed -n 's/^[[:space:]]*Resource_List\.walltime[[:space:]]*=[[:space:]]*//p' | head -n 1)
+    w=$(qstat -f "$PBS_JOBID" 2> /dev/null |
+      sed -n 's/^[[:space:]]*Resource_List\.walltime[[:space:]]*=[[:space:]]*//p' | head -n 1)
   fi
   if [[ -z $w && -r ${JOB_SCRIPT:-} ]]; then
     w=$(sed -n 's/^#PBS[[:space:]].*walltime=\([0-9:]*\).*/\1/p' "$JOB_SCRIPT" | head -n 1)
