@@ -7,9 +7,10 @@
 # SIGUSR1 SIGNAL_MARGIN seconds before the wall time (read from qstat, or this script's
 # walltime line); indent finishes or abandons its step, writes OUTPUT_DIR/checkpoint.h5 and exits
 # with 75, and the job submits this script again (qsub), whose run adds -restart OUTPUT_DIR. A
-# finished run (summary.json) makes the job do nothing. qdel leaves a checkpoint without
-# resubmitting; `qsig -s USR1 <job>` checkpoints and resubmits at once. doc/cluster.md explains it
-# all; scripts/sweep.py --pbs writes one such script per run of a sweep.
+# finished run (summary.json) makes the job do nothing. By hand: `qsig -s USR1 <job>` checkpoints
+# and resubmits now, `qsig -s TERM <job>` checkpoints and ends the job (qdel signals every process:
+# do not count on its checkpoint). doc/cluster.md explains it all; scripts/sweep.py --pbs writes one
+# such script per run of a sweep.
 #PBS -N indent-paper
 # PBS Pro syntax; Torque: #PBS -l nodes=1:ppn=8
 #PBS -l select=1:ncpus=8:mpiprocs=8

@@ -6,8 +6,9 @@
 # Slurm sends SIGUSR1 to this shell 300 s before the limit (--signal=B:USR1@300); the shell passes it
 # on to srun, srun to every rank, and indent finishes or abandons its step, writes
 # OUTPUT_DIR/checkpoint.h5 and exits with 75; the job then requeues itself and the next run adds
-# -restart OUTPUT_DIR. A finished run (summary.json) makes the job do nothing. scancel also leaves
-# a checkpoint, without requeueing; `scancel -b -s USR1 <job>` checkpoints and requeues at once.
+# -restart OUTPUT_DIR. A finished run (summary.json) makes the job do nothing. By hand:
+# `scancel -b -s USR1 <job>` checkpoints and requeues now, `scancel -b -s TERM <job>` checkpoints and
+# ends the job (a plain scancel may signal the ranks twice: do not count on its checkpoint).
 # doc/cluster.md explains it all; scripts/sweep.py --slurm writes one such script per run of a sweep.
 #SBATCH --job-name=indent-paper
 #SBATCH --ntasks=8
