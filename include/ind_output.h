@@ -11,6 +11,8 @@
 #include "ind_contact.h"
 
 #define IND_MAX_OUTPUT_STEPS 100000
+/* Values recorded per output step for the XDMF index: accepted step, load factor, depth (nm), load (uN). */
+#define IND_OUTPUT_INFO 4
 
 /* One line of the load-displacement curve, <output_dir>/load_displacement.csv. */
 typedef struct {
@@ -38,7 +40,9 @@ struct _p_IndOutput {
   IndContact    contact;                      /* NULL without an indenter */
   Vec           Gc, Cloc, c3, pressure, status; /* contact fields: disc layout (global, local), vertex 3-dof and 1-dof */
   PetscInt    nsteps;
-  PetscReal  *times;
+  PetscReal  *times;    /* per output step: XDMF time value, the pseudo-time t given to IndOutputSetStepInfo */
+  PetscReal  *info;     /* per output step: IND_OUTPUT_INFO values, NaN where not known */
+  PetscBool   info_set; /* IndOutputSetStepInfo was called for the coming step */
   PetscInt    nvert, ncell, corners; /* global counts */
 };
 
@@ -48,5 +52,11 @@ PetscErrorCode IndOutputSetContact(IndOutput out, IndContact contact);
 PetscErrorCode IndOutputDestroy(IndOutput *out);
 /* Appends a line to the curve (rank 0 writes; flushed at once, so a killed run keeps its curve). */
 PetscErrorCode IndOutputCurvePoint(IndOutput out, const IndCurvePoint *point);
-/* Appends one step (time = load factor, or indenter depth later) to the HDF5 file and rewrites the XDMF. */
+/* Records what the XDMF index says of the coming output step: the accepted step number, the load program's
+   pseudo-time t (the time value: it increases through loading, hold and unloading), the load factor and,
+   with an indenter, its depth (nm) and load (uN). Call it before each IndOutputWriteStep. */
+PetscErrorCode IndOutputSetStepInfo(IndOutput out, PetscInt step, PetscReal t, PetscReal lambda, PetscReal depth,
+                                    PetscReal load);
+/* Appends one step to the HDF5 file and rewrites the XDMF index; time is its time value only when
+   IndOutputSetStepInfo was not called for it (nothing else is then known of the step). */
 PetscErrorCode IndOutputWriteStep(IndOutput out, PetscReal time, Vec U, IndAssembly assembly);

@@ -4,6 +4,7 @@
 #include "ind_files.h"
 #include "ind_elasticity.h"
 #include "ind_version.h"
+#include "xdmf.h"
 
 /* A clone of the mesh with dof unknowns on every point of one stratum (depth 0: vertices, height 0: cells). */
 static PetscErrorCode CreateStratumDM(DM dm, PetscBool cells, PetscInt dof, DM *out)
@@ -155,54 +156,66 @@ static PetscErrorCode OpenFile(IndOutput o)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode WriteXdmf(IndOutput o)
+/* Records output step o->nsteps (from IndOutputSetStepInfo; else time is its time value and nothing else is
+   known), adds its views to indent.h5 and rewrites the XDMF index (xdmf.c). */
+static PetscErrorCode WriteXdmf(IndOutput o, PetscReal time)
 {
-  PetscMPIInt rank;
-  char        path[PETSC_MAX_PATH_LEN], h5base[PETSC_MAX_PATH_LEN];
-  FILE       *fp;
-  const char *cell = o->mesh->simplex ? "Tetrahedron" : "Hexahedron";
-  const struct {
-    const char *name, *type, *center;
-    PetscInt    n, bs;
-  } fields[] = {
-    {"displacement", "Vector", "Node", o->nvert, 3},
-    {"stress", "Matrix", "Cell", o->ncell, 6}, /* Voigt xx,yy,zz,xy,yz,xz: not XDMF Tensor6 order */
-    {"strain", "Matrix", "Cell", o->ncell, 6},
-    {"von_mises", "Scalar", "Cell", o->ncell, 1},
-    {"plastic_strain", "Scalar", "Cell", o->ncell, 1},
-    {"back_stress", "Scalar", "Cell", o->ncell, 1},
-    {"yielding", "Scalar", "Cell", o->ncell, 1},
-    {"contact_pressure", "Scalar", "Node", o->nvert, 1},
-    {"contact_status", "Scalar", "Node", o->nvert, 1},
+  const IndXdmfField fields[] = {
+    {"displacement", "Vector", PETSC_FALSE, 3},
+    {"stress", "Matrix", PETSC_TRUE, 6}, /* Voigt xx,yy,zz,xy,yz,xz: not XDMF Tensor6 order */
+    {"strain", "Matrix", PETSC_TRUE, 6},
+    {"von_mises", "Scalar", PETSC_TRUE, 1},
+    {"plastic_strain", "Scalar", PETSC_TRUE, 1},
+    {"back_stress", "Scalar", PETSC_TRUE, 1},
+    {"yielding", "Scalar", PETSC_TRUE, 1},
+    {"contact_pressure", "Scalar", PETSC_FALSE, 1},
+    {"contact_status", "Scalar", PETSC_FALSE, 1},
   };
-  const size_t nfields = sizeof(fields) / sizeof(fields[0]) - (o->contact ? 0 : 2);
+  const PetscInt    nfields = (PetscInt)(sizeof(fields) / sizeof(fields[0])) - (o->contact ? 0 : 2);
+  const IndXdmfMesh mesh    = {"indent.h5", o->mesh->simplex, o->nvert, o->ncell};
+  PetscReal        *info    = o->info + IND_OUTPUT_INFO * o->nsteps;
+  IndXdmfStep      *steps;
+  char              path[PETSC_MAX_PATH_LEN];
 
   PetscFunctionBeginUser;
-  PetscCallMPI(MPI_Comm_rank(PetscObjectComm((PetscObject)o->vdm), &rank));
-  if (rank) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCall(PetscSNPrintf(path, sizeof(path), "%s/indent.xdmf", o->dir));
-  PetscCall(PetscStrncpy(h5base, "indent.h5", sizeof(h5base)));
-  fp = fopen(path, "w");
-  PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "Cannot write '%s' (-output_dir)", path);
-  fprintf(fp, "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"2.0\">\n<Domain>\n");
-  fprintf(fp, "<DataItem Name=\"cells\" Format=\"HDF\" NumberType=\"Int\" Precision=\"%d\" Dimensions=\"%" PetscInt_FMT " %" PetscInt_FMT "\">%s:/topology/cells</DataItem>\n", (int)sizeof(PetscInt), o->ncell, o->corners, h5base);
-  fprintf(fp, "<DataItem Name=\"vertices\" Format=\"HDF\" NumberType=\"Float\" Precision=\"8\" Dimensions=\"%" PetscInt_FMT " 3\">%s:/geometry/vertices</DataItem>\n", o->nvert, h5base);
-  fprintf(fp, "<Grid Name=\"steps\" GridType=\"Collection\" CollectionType=\"Temporal\">\n");
-  for (PetscInt t = 0; t < o->nsteps; ++t) {
-    fprintf(fp, "<Grid Name=\"step %" PetscInt_FMT "\" GridType=\"Uniform\">\n<Time Value=\"%.10g\"/>\n", t, (double)o->times[t]);
-    fprintf(fp, "<Topology TopologyType=\"%s\" NumberOfElements=\"%" PetscInt_FMT "\"><DataItem Reference=\"XML\">/Xdmf/Domain/DataItem[@Name=\"cells\"]</DataItem></Topology>\n", cell, o->ncell);
-    fprintf(fp, "<Geometry GeometryType=\"XYZ\"><DataItem Reference=\"XML\">/Xdmf/Domain/DataItem[@Name=\"vertices\"]</DataItem></Geometry>\n");
-    for (size_t f = 0; f < nfields; ++f) {
-      fprintf(fp, "<Attribute Name=\"%s\" AttributeType=\"%s\" Center=\"%s\">\n", fields[f].name, fields[f].type, fields[f].center);
-      fprintf(fp, "<DataItem ItemType=\"HyperSlab\" Dimensions=\"%" PetscInt_FMT " %" PetscInt_FMT "\" Type=\"HyperSlab\">\n", fields[f].n, fields[f].bs);
-      fprintf(fp, "<DataItem Dimensions=\"3 3\" Format=\"XML\">%" PetscInt_FMT " 0 0 1 1 1 1 %" PetscInt_FMT " %" PetscInt_FMT "</DataItem>\n", t, fields[f].n, fields[f].bs);
-      fprintf(fp, "<DataItem Format=\"HDF\" NumberType=\"Float\" Precision=\"8\" Dimensions=\"%" PetscInt_FMT " %" PetscInt_FMT " %" PetscInt_FMT "\">%s:/fields/%s</DataItem>\n", o->nsteps, fields[f].n, fields[f].bs, h5base, fields[f].name);
-      fprintf(fp, "</DataItem>\n</Attribute>\n");
-    }
-    fprintf(fp, "</Grid>\n");
+  if (!o->info_set) {
+    o->times[o->nsteps] = time;
+    for (int i = 0; i < IND_OUTPUT_INFO; ++i) info[i] = NAN;
   }
-  fprintf(fp, "</Grid>\n</Domain>\n</Xdmf>\n");
-  PetscCheck(fclose(fp) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Error writing '%s'", path);
+  o->info_set = PETSC_FALSE;
+  PetscCall(IndXdmfAddStepViews(o->viewer, o->nsteps, nfields, fields));
+  o->nsteps++;
+  PetscCall(PetscMalloc1(o->nsteps, &steps));
+  for (PetscInt k = 0; k < o->nsteps; ++k) {
+    const PetscReal *in = o->info + IND_OUTPUT_INFO * k;
+    steps[k] = (IndXdmfStep){PetscIsNanReal(in[0]) ? -1 : (PetscInt)in[0], o->times[k], in[1], in[2], in[3]};
+  }
+  PetscCall(PetscSNPrintf(path, sizeof(path), "%s/indent.xdmf", o->dir));
+  PetscCall(IndXdmfWrite(PetscObjectComm((PetscObject)o->vdm), path, &mesh, nfields, fields, o->nsteps, steps));
+  PetscCall(PetscFree(steps));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode IndOutputSetStepInfo(IndOutput o, PetscInt step, PetscReal t, PetscReal lambda, PetscReal depth,
+                                    PetscReal load)
+{
+  MPI_Comm   comm = PetscObjectComm((PetscObject)o->vdm);
+  PetscReal *info;
+
+  PetscFunctionBeginUser;
+  if (!o->enabled) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCheck(o->nsteps < IND_MAX_OUTPUT_STEPS, comm, PETSC_ERR_SUP, "More than %d output steps", IND_MAX_OUTPUT_STEPS);
+  /* ParaView and meshio order the steps by their time values. */
+  PetscCheck(o->nsteps == 0 || t > o->times[o->nsteps - 1], comm, PETSC_ERR_ARG_WRONG,
+             "Output step %" PetscInt_FMT " at pseudo-time %g does not follow the last one's %g", o->nsteps, (double)t,
+             (double)o->times[o->nsteps - 1]);
+  info                = o->info + IND_OUTPUT_INFO * o->nsteps;
+  o->times[o->nsteps] = t;
+  info[0]             = (PetscReal)step;
+  info[1]             = lambda;
+  info[2]             = o->contact ? depth : NAN;
+  info[3]             = o->contact ? load : NAN;
+  o->info_set         = PETSC_TRUE;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -246,6 +259,8 @@ PetscErrorCode IndOutputCreate(IndMesh mesh, IndDisc disc, IndOutput *out)
   PetscCall(PetscObjectSetName((PetscObject)o->back, "back_stress"));
   PetscCall(PetscObjectSetName((PetscObject)o->yielding, "yielding"));
   PetscCall(PetscMalloc1(IND_MAX_OUTPUT_STEPS, &o->times));
+  PetscCall(PetscMalloc1(IND_OUTPUT_INFO * IND_MAX_OUTPUT_STEPS, &o->info));
+  for (PetscInt i = 0; i < IND_OUTPUT_INFO * IND_MAX_OUTPUT_STEPS; ++i) o->info[i] = NAN;
   *out = o;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -351,8 +366,7 @@ PetscErrorCode IndOutputWriteStep(IndOutput o, PetscReal time, Vec U, IndAssembl
   }
   PetscCall(PetscViewerHDF5PopGroup(o->viewer));
   PetscCall(PetscViewerFlush(o->viewer));
-  o->times[o->nsteps++] = time;
-  PetscCall(WriteXdmf(o));
+  PetscCall(WriteXdmf(o, time));
   PetscCall(PetscLogEventEnd(IndLog.output_write, 0, 0, 0, 0));
   PetscCall(PetscLogStagePop());
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -404,6 +418,7 @@ PetscErrorCode IndOutputDestroy(IndOutput *o)
   PetscCall(DMDestroy(&(*o)->c6dm));
   PetscCall(DMDestroy(&(*o)->c1dm));
   PetscCall(PetscFree((*o)->times));
+  PetscCall(PetscFree((*o)->info));
   PetscCall(PetscFree(*o));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
