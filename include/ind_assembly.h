@@ -55,3 +55,8 @@ PetscErrorCode IndAssemblyCreateMatrix(IndAssembly assembly, Mat *J);
 PetscErrorCode IndAssemblyResidual(IndAssembly assembly, Vec Uloc, Vec Floc);
 PetscErrorCode IndAssemblyJacobian(IndAssembly assembly, Vec Uloc, Mat J);
 PetscErrorCode IndAssemblyCellAverages(IndAssembly assembly, Vec Uloc, IndCellFields *fields);
+/* Local cells whose deformation gradient F = I + grad u has det F <= 0 at a quadrature point (inverted
+   by the displacement Uloc), and the smallest det F met. The finite-strain residual fails such a point,
+   so Newton cuts the step back; at small strain nothing stops them, and an accepted state is checked
+   with this (run_checks.c). */
+PetscErrorCode IndAssemblyCountInverted(IndAssembly assembly, Vec Uloc, PetscInt *ncells, PetscReal *jmin);

@@ -6,6 +6,9 @@
   #define PETSC_SUCCESS 0 /* PETSc < 3.19 returns plain 0 */
 #endif
 
+#include "ind_options.h"
+#include "ind_errors.h"
+
 #define IND_NAME_LEN 128
 
 typedef struct {
@@ -17,6 +20,3 @@ typedef struct {
 extern IndLogTable IndLog;
 
 PetscErrorCode IndLogRegister(void);
-
-/* Errors on options nobody read, except those PETSc only reads lazily (see options.c). */
-PetscErrorCode IndOptionsCheckUnused(MPI_Comm comm);

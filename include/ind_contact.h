@@ -1,6 +1,6 @@
 #pragma once
 /* Frictional contact of the displacement nodes of one named surface (-contact_surface) with a rigid
-   analytic indenter (THEORY.md section 2). Every contact node is owned by the rank that owns its
+   analytic indenter (doc/theory.md section 2). Every contact node is owned by the rank that owns its
    dofs, like the mesh; its reaction (a nodal force on the body, nN, global axes) lives here in a
    committed copy (end of the last accepted step) and a current one (the outer Uzawa iterate).
 
@@ -61,6 +61,11 @@ struct _p_IndContact {
   PetscInt   *status;   /* n, IndContactStatus of the last update */
   PetscReal   depth_c;  /* indenter depth at the committed state */
   PetscBool   areas_current; /* A from the deformed surface at each update (finite strain) */
+  PetscBool  *edge;          /* n: the node lies on the edge of the modelled surface (not on a symmetry plane) */
+  PetscInt    nedge;         /* such nodes, all ranks */
+  PetscReal   top;           /* z of the surface's highest node, nm */
+  PetscReal   zmin;          /* z of the mesh's lowest point, nm */
+  PetscReal   surface_area;  /* projected area of the contact surface times the symmetry factor, nm^2 */
   IndMesh     mesh;          /* borrowed, for the surface's faces */
   IndDisc     disc;          /* borrowed */
   char        surface[IND_NAME_LEN];
@@ -72,7 +77,9 @@ PetscErrorCode IndContactDestroy(IndContact *contact);
 /* Whether the tributary areas (true contact area, contact pressure) follow the deformed surface. */
 PetscErrorCode IndContactSetCurrentAreas(IndContact contact, PetscBool current);
 /* rho per node from the diagonal of the (unconstrained) stiffness K; pen_atol from the largest depth;
-   which components of the nodes the (set up) boundary conditions hold. */
+   which components of the nodes the (set up) boundary conditions hold. Refuses (but not in a -help
+   listing) a depth that reaches the mesh's bottom and, when no boundary displacement moves the body,
+   an indenter that at full depth does not reach the surface. */
 PetscErrorCode IndContactSetUp(IndContact contact, IndBC bc, Mat K, PetscReal depth_max);
 /* F holds the residual without contact at U (global vectors, before boundary conditions): fixed
    point, F -= frozen reactions; newton, the contact nodes' rows become the complementarity function. */

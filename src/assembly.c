@@ -15,12 +15,13 @@ PetscErrorCode IndAssemblyCreate(IndDisc disc, IndMaterials mats, IndHistory his
   a->history = history;
   a->tangent     = IND_TANGENT_CONSISTENT;
   a->formulation = IND_FORMULATION_FINITE; /* agrees with large-deformation references (doc/finite-strain.md) */
-  PetscOptionsBegin(PetscObjectComm((PetscObject)disc->dm), NULL, "Assembly", "Assembly");
-  PetscCall(PetscOptionsEnum("-formulation",
-                             "Kinematics: finite strain (total Lagrangian, plasticity in logarithmic strain) or small "
-                             "strain (the paper's model)",
-                             "", IndFormulationTypes, (PetscEnum)a->formulation, (PetscEnum *)&a->formulation, NULL));
-  PetscCall(PetscOptionsEnum("-plastic_tangent", "Tangent of plastic points: consistent (quadratic Newton) or elastic", "", IndTangentTypes, (PetscEnum)a->tangent, (PetscEnum *)&a->tangent, NULL));
+  PetscOptionsBegin(PetscObjectComm((PetscObject)disc->dm), NULL, IND_TITLE "Kinematics and assembly", "Assembly");
+  PetscCall(IndOptionsEnum("-formulation",
+                           "Kinematics: finite strain (total Lagrangian, plasticity in logarithmic strain) or small "
+                           "strain (the paper's model)",
+                           IndFormulationTypes, (PetscEnum)a->formulation, (PetscEnum *)&a->formulation, NULL));
+  PetscCall(IndOptionsEnum("-plastic_tangent", "Tangent of plastic points: consistent (quadratic Newton) or elastic",
+    IndTangentTypes, (PetscEnum)a->tangent, (PetscEnum *)&a->tangent, NULL));
   PetscOptionsEnd();
   PetscCall(PetscMalloc6(nd, &a->ue, nd, &a->fe, nd * nd, &a->Ke, disc->nb * 3, &a->G, 6 * nd, &a->DB, 6 * nd, &a->B));
   *out = a;
@@ -233,8 +234,9 @@ PetscErrorCode IndAssemblyCreateMatrix(IndAssembly a, Mat *J)
   PetscCall(MatSetOption(*J, MAT_NO_OFF_PROC_ZERO_ROWS, PETSC_TRUE));
   {
     PetscBool cached = PETSC_TRUE;
-    PetscOptionsBegin(comm, NULL, "Jacobian assembly", "Assembly");
-    PetscCall(PetscOptionsBool("-jac_cached_insert", "Add element matrices at cached positions (false: MatSetValues)", "", cached, &cached, NULL));
+    PetscOptionsBegin(comm, NULL, IND_TITLE "Jacobian assembly", "Assembly");
+    PetscCall(IndOptionsBool("-jac_cached_insert", "Add element matrices at cached positions (false: MatSetValues)",
+      cached, &cached, NULL));
     PetscOptionsEnd();
     PetscCall(IndMatInsertDestroy(&a->insert));
     a->J = *J;
@@ -291,6 +293,35 @@ PetscErrorCode IndAssemblyCellAverages(IndAssembly a, Vec Uloc, IndCellFields *o
     out->yielding[i]    = yavg / vol0;
   }
   PetscCall(VecRestoreArrayRead(a->history->committed, &hist));
+  PetscCall(VecRestoreArrayRead(Uloc, &u));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode IndAssemblyCountInverted(IndAssembly a, Vec Uloc, PetscInt *ncells, PetscReal *jmin)
+{
+  IndDisc            disc = a->disc;
+  const PetscInt     nb = disc->nb, nq = disc->nq;
+  const PetscScalar *u;
+
+  PetscFunctionBeginUser;
+  *ncells = 0;
+  *jmin   = PETSC_MAX_REAL;
+  PetscCall(VecGetArrayRead(Uloc, &u));
+  for (PetscInt i = 0; i < disc->ncell; ++i) {
+    PetscBool inverted = PETSC_FALSE;
+    GatherCell(disc, i, u, a->ue);
+    for (PetscInt q = 0; q < nq; ++q) {
+      PetscReal F[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1}, J;
+      IndDiscGradients(disc, i, q, a->G);
+      for (PetscInt b = 0; b < nb; ++b)
+        for (int r = 0; r < 3; ++r)
+          for (int c = 0; c < 3; ++c) F[3 * r + c] += a->ue[3 * b + r] * a->G[3 * b + c];
+      J = F[0] * (F[4] * F[8] - F[5] * F[7]) - F[1] * (F[3] * F[8] - F[5] * F[6]) + F[2] * (F[3] * F[7] - F[4] * F[6]);
+      *jmin = PetscMin(*jmin, J);
+      if (!(J > 0)) inverted = PETSC_TRUE;
+    }
+    *ncells += inverted ? 1 : 0;
+  }
   PetscCall(VecRestoreArrayRead(Uloc, &u));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -41,6 +41,7 @@ static PetscErrorCode SymmetryAxis(IndBC bc, const char label[], PetscInt *mask,
 
   PetscFunctionBeginUser;
   PetscCall(IndMeshGetRegionLabel(bc->mesh, label, 2, "-bc_symmetry", &l));
+  if (!IndHelpListing()) PetscCall(IndMeshCheckRegionNotEmpty(bc->mesh, label, 2, "-bc_symmetry"));
   PetscCall(DMLabelGetStratumIS(l, 1, &faces));
   if (faces) {
     const PetscInt *f;
@@ -83,20 +84,25 @@ PetscErrorCode IndBCCreate(IndMesh mesh, IndDisc disc, IndBC *out)
   PetscCall(PetscCalloc1(1, &bc));
   bc->mesh = mesh;
   bc->disc = disc;
-  PetscOptionsBegin(comm, NULL, "Boundary conditions on named surfaces", "BC");
-  PetscCall(PetscOptionsStringArray("-bc_fixed", "Surfaces with all displacement components zero", "", fixed, &nfixed, &set));
+  PetscOptionsBegin(comm, NULL, IND_TITLE "Boundary conditions on named surfaces (-bc_*)", "BC");
+  PetscCall(IndOptionsStringArray("-bc_fixed", "Surfaces with all displacement components zero", "surface,...", fixed,
+    &nfixed, &set));
   if (!set) nfixed = 0;
-  PetscCall(PetscOptionsStringArray("-bc_symmetry", "Symmetry planes (normal displacement zero; axis-aligned)", "", sym, &nsym, &set));
+  PetscCall(IndOptionsStringArray("-bc_symmetry", "Symmetry planes (normal displacement zero; axis-aligned)",
+    "surface,...", sym, &nsym, &set));
   if (!set) nsym = 0;
-  PetscCall(PetscOptionsStringArray("-bc_roller", "Rollers as surface:components, e.g. bottom:z,left:xy", "", roller, &nroller, &set));
+  PetscCall(IndOptionsStringArray("-bc_roller", "Rollers: the components held on each surface, e.g. bottom:z,left:xy",
+    "surface:components,...", roller, &nroller, &set));
   if (!set) nroller = 0;
-  PetscCall(PetscOptionsStringArray("-bc_displacement", "Prescribed displacement at full load as surface:component=value (nm), e.g. top:z=-10", "", disp, &ndisp, &set));
+  PetscCall(IndOptionsStringArray("-bc_displacement", "Prescribed displacement at full load in nm, e.g. top:z=-10",
+    "surface:components=value,...", disp, &ndisp, &set));
   if (!set) ndisp = 0;
   PetscOptionsEnd();
 
   for (PetscInt i = 0; i < nfixed; ++i) {
     DMLabel l;
     PetscCall(IndMeshGetRegionLabel(mesh, fixed[i], 2, "-bc_fixed", &l));
+    if (!IndHelpListing()) PetscCall(IndMeshCheckRegionNotEmpty(mesh, fixed[i], 2, "-bc_fixed"));
     PetscCall(AddSpec(bc, fixed[i], "-bc_fixed", 7, NULL, NULL, NULL));
   }
   for (PetscInt i = 0; i < nsym; ++i) {
@@ -114,6 +120,7 @@ PetscErrorCode IndBCCreate(IndMesh mesh, IndDisc disc, IndBC *out)
     *colon = 0;
     PetscCall(ParseComponents(comm, "-bc_roller", roller[i], colon + 1, &mask));
     PetscCall(IndMeshGetRegionLabel(mesh, roller[i], 2, "-bc_roller", &l));
+    if (!IndHelpListing()) PetscCall(IndMeshCheckRegionNotEmpty(mesh, roller[i], 2, "-bc_roller"));
     PetscCall(AddSpec(bc, roller[i], "-bc_roller", mask, NULL, NULL, NULL));
   }
   for (PetscInt i = 0; i < ndisp; ++i) {
@@ -125,10 +132,14 @@ PetscErrorCode IndBCCreate(IndMesh mesh, IndDisc disc, IndBC *out)
     *colon = 0;
     PetscCall(ParseComponents(comm, "-bc_displacement", disp[i], colon + 1, &mask));
     v = strtod(eq + 1, &end);
-    PetscCheck(end != eq + 1 && *end == 0 && PetscIsNormalReal(v) | (v == 0), comm, PETSC_ERR_ARG_WRONG, "-bc_displacement: bad value '%s' for surface '%s'", eq + 1, disp[i]);
+    PetscCheck(end != eq + 1 && *end == 0, comm, PETSC_ERR_ARG_WRONG,
+      "-bc_displacement: '%s' for surface '%s' is not a number (nm)", eq + 1, disp[i]);
+    PetscCheck(!PetscIsInfOrNanReal(v), comm, PETSC_ERR_ARG_OUTOFRANGE,
+      "-bc_displacement: '%s' for surface '%s' is not a finite number (nm)", eq + 1, disp[i]);
     for (int c = 0; c < 3; ++c)
       if (mask & (1 << c)) value[c] = v;
     PetscCall(IndMeshGetRegionLabel(mesh, disp[i], 2, "-bc_displacement", &l));
+    if (!IndHelpListing()) PetscCall(IndMeshCheckRegionNotEmpty(mesh, disp[i], 2, "-bc_displacement"));
     PetscCall(AddSpec(bc, disp[i], "-bc_displacement", mask, value, NULL, NULL));
   }
   for (PetscInt i = 0; i < nfixed; ++i) PetscCall(PetscFree(fixed[i]));

@@ -109,9 +109,29 @@ static PetscErrorCode FaceAreas(DM dm, PetscSection s, PetscInt face, const Pets
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Adds to slot 1 of each node of one face (vertices in cyclic order, vx their coordinates) the face's
+   interior angle at the node: at a corner the angle between its edges, pi at an edge node, 2 pi at a
+   face's centre node. Summed over the surface, a node inside it gets 2 pi, one on its boundary less. */
+static void FaceAngles(const PetscInt *voff, PetscInt nv, const PetscReal *vx, PetscScalar *a)
+{
+  for (PetscInt k = 0; k < nv; ++k) {
+    const PetscReal *p = vx + 3 * k, *prev = vx + 3 * ((k + nv - 1) % nv), *next = vx + 3 * ((k + 1) % nv);
+    PetscReal        e1[3], e2[3], d = 0, l1 = 0, l2 = 0;
+    for (int i = 0; i < 3; ++i) {
+      e1[i] = prev[i] - p[i];
+      e2[i] = next[i] - p[i];
+      d += e1[i] * e2[i];
+      l1 += e1[i] * e1[i];
+      l2 += e2[i] * e2[i];
+    }
+    a[voff[k] + 1] += l1 > 0 && l2 > 0 ? PetscAcosReal(PetscMax(-1.0, PetscMin(1.0, d / PetscSqrtReal(l1 * l2)))) : 0.0;
+  }
+}
+
 /* Marks the nodes of the contact surface and sums their tributary areas, in a global vector laid out
-   like the displacement: slot 0 counts faces, slot 2 holds the area. With Uloc (a local displacement)
-   the faces are taken through their vertices' current positions X + u. */
+   like the displacement: slot 0 counts faces, slot 1 sums the faces' angles at the node (FaceAngles),
+   slot 2 holds the area. With Uloc (a local displacement) the faces are taken through their vertices'
+   current positions X + u. */
 static PetscErrorCode SurfaceNodes(IndMesh mesh, IndDisc disc, const char surface[], Vec Uloc, Vec G)
 {
   DM                 dm = disc->dm, cdm;
@@ -121,11 +141,12 @@ static PetscErrorCode SurfaceNodes(IndMesh mesh, IndDisc disc, const char surfac
   Vec                loc, X;
   PetscScalar       *a;
   const PetscScalar *u = NULL;
-  PetscInt           vStart, vEnd;
+  PetscInt           vStart, vEnd, eStart, eEnd;
 
   PetscFunctionBeginUser;
   PetscCall(IndMeshGetRegionLabel(mesh, surface, 2, "-contact_surface", &label));
   PetscCall(DMPlexGetDepthStratum(dm, 0, &vStart, &vEnd));
+  PetscCall(DMPlexGetDepthStratum(dm, 1, &eStart, &eEnd));
   if (Uloc) PetscCall(VecGetArrayRead(Uloc, &u));
   PetscCall(DMGetLocalSection(dm, &s));
   PetscCall(DMGetCoordinateDM(dm, &cdm));
@@ -141,7 +162,7 @@ static PetscErrorCode SurfaceNodes(IndMesh mesh, IndDisc disc, const char surfac
     PetscCall(ISGetLocalSize(faces, &nf));
     PetscCall(ISGetIndices(faces, &f));
     for (PetscInt i = 0; i < nf; ++i) {
-      PetscInt    *closure = NULL, ncl, nc, nv = 0;
+      PetscInt    *closure = NULL, ncl, nc, nv = 0, voff[4];
       PetscScalar *xc = NULL;
       PetscReal    vx[12], uv[12];
       PetscCall(DMPlexGetTransitiveClosure(dm, f[i], PETSC_TRUE, &ncl, &closure));
@@ -154,8 +175,8 @@ static PetscErrorCode SurfaceNodes(IndMesh mesh, IndDisc disc, const char surfac
         /* vertices come in the closure's order, as in the coordinate closure below */
         if (closure[2 * j] >= vStart && closure[2 * j] < vEnd && nv < 4) {
           for (int d = 0; d < 3; ++d) uv[3 * nv + d] = u ? PetscRealPart(u[o + d]) : 0.0;
-          nv++;
-        }
+          voff[nv++] = o;
+        } else a[o + 1] += closure[2 * j] >= eStart && closure[2 * j] < eEnd ? PETSC_PI : 2 * PETSC_PI;
       }
       PetscCall(DMPlexRestoreTransitiveClosure(dm, f[i], PETSC_TRUE, &ncl, &closure));
       PetscCall(DMPlexVecGetClosure(cdm, cs, X, f[i], &nc, &xc));
@@ -165,6 +186,7 @@ static PetscErrorCode SurfaceNodes(IndMesh mesh, IndDisc disc, const char surfac
                  surface, nv, nc);
       for (PetscInt k = 0; k < nc; ++k) vx[k] = PetscRealPart(xc[k]) + uv[k];
       PetscCall(DMPlexVecRestoreClosure(cdm, cs, X, f[i], &nc, &xc));
+      FaceAngles(voff, nv, vx, a);
       PetscCall(FaceAreas(dm, s, f[i], vx, nc / 3, disc->degree, a));
     }
     PetscCall(ISRestoreIndices(faces, &f));
@@ -192,6 +214,91 @@ static PetscReal SymmetryFactor(IndBC bc, const IndIndenter *ind)
   return f;
 }
 
+/* Whether the symmetry plane of spec k passes through the indenter's axis: 0 no, 1 normal x, 2 normal y. */
+static int PlaneThroughAxis(const IndBCSpec *spec, const IndIndenter *ind)
+{
+  PetscBool sym;
+  PetscStrcmp(spec->option, "-bc_symmetry", &sym);
+  if (!sym) return 0;
+  for (int c = 0; c < 2; ++c)
+    if (spec->mask == (1 << c) && PetscAbsReal(spec->plane - ind->axis[c]) <= 1e-9 * (1 + PetscAbsReal(ind->axis[c])))
+      return c + 1;
+  return 0;
+}
+
+/* A symmetry plane through the axis halves the indenter too: it must be one of the pyramid's mirror
+   planes, which contain its axis at the azimuths rotation + k 180/nfaces degrees. A plane normal to y
+   runs along azimuth 0, one normal to x along 90. */
+static PetscErrorCode CheckRotation(MPI_Comm comm, IndBC bc, const IndIndenter *ind, PetscReal rotation)
+{
+  const PetscReal period = ind->nfaces ? 180.0 / ind->nfaces : 0;
+  PetscInt        planes = 0;
+
+  PetscFunctionBeginUser;
+  if (!ind->nfaces) PetscFunctionReturn(PETSC_SUCCESS); /* axisymmetric */
+  for (PetscInt k = 0; k < bc->nspec; ++k) planes += PlaneThroughAxis(&bc->spec[k], ind) ? 1 : 0;
+  for (PetscInt k = 0; k < bc->nspec; ++k) {
+    const int       c     = PlaneThroughAxis(&bc->spec[k], ind);
+    const PetscReal along = c == 2 ? 0.0 : 90.0;
+    const char     *hint;
+    PetscReal       r;
+    if (!c) continue;
+    r = PetscFmodReal(PetscFmodReal(along - rotation, period) + period, period);
+    if (planes > 1 && ind->nfaces == 3)
+      hint = "a three-sided pyramid has no two perpendicular mirror planes: mesh a half or a full model";
+    else if (ind->nfaces == 4) hint = "use a rotation of 0, 45, 90, ... degrees, or a full model";
+    else if (PetscFmodReal(along, period) == 0) hint = "use a rotation of 0, 60, 120, ... degrees, or a full model";
+    else hint = "use a rotation of 30, 90, 150, ... degrees, or a full model";
+    PetscCheck(r < 1e-6 || period - r < 1e-6, comm, PETSC_ERR_ARG_INCOMP,
+               "-indenter_rotation %.6g degrees: the %s indenter is not mirror-symmetric about the symmetry plane "
+               "'%s' (%c = %.6g nm, through its axis), so this %s model does not represent it; %s",
+               (double)rotation, IndIndenterTypes[ind->type], bc->spec[k].label, c == 2 ? 'y' : 'x',
+               (double)bc->spec[k].plane, planes > 1 ? "quarter" : "half", hint);
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Which contact nodes lie on the edge of the modelled surface (its boundary, less the parts on
+   symmetry planes, where the body goes on in the mirror image), the lowest point of the mesh and the
+   surface's projected area (times the symmetry factor): what the run's checks compare with
+   (run_checks.c). */
+static PetscErrorCode SurfaceEdgeAndSize(IndContact c, IndMesh mesh, IndBC bc)
+{
+  Vec                X;
+  const PetscScalar *x;
+  PetscInt           n, counts[2] = {0, 0};
+  PetscReal          zmin = PETSC_MAX_REAL, scale = 0, area = 0;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMGetCoordinatesLocal(mesh->dm, &X));
+  PetscCall(VecGetLocalSize(X, &n));
+  PetscCall(VecGetArrayRead(X, &x));
+  for (PetscInt k = 0; k < n; k += 3) {
+    zmin = PetscMin(zmin, PetscRealPart(x[k + 2]));
+    for (int d = 0; d < 3; ++d) scale = PetscMax(scale, PetscAbsReal(PetscRealPart(x[k + d])));
+  }
+  PetscCall(VecRestoreArrayRead(X, &x));
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &zmin, 1, MPIU_REAL, MPIU_MIN, c->comm));
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &scale, 1, MPIU_REAL, MPIU_MAX, c->comm));
+  c->zmin = zmin;
+  for (PetscInt i = 0; i < c->n; ++i) {
+    area += c->A[i];
+    for (PetscInt k = 0; k < bc->nspec && c->edge[i]; ++k) {
+      PetscBool sym;
+      PetscCall(PetscStrcmp(bc->spec[k].option, "-bc_symmetry", &sym));
+      for (int d = 0; d < 3 && sym; ++d)
+        if (bc->spec[k].mask == (1 << d) && PetscAbsReal(c->X[3 * i + d] - bc->spec[k].plane) <= 1e-9 * (1 + scale))
+          c->edge[i] = PETSC_FALSE;
+    }
+    counts[0] += c->edge[i] ? 1 : 0;
+  }
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &area, 1, MPIU_REAL, MPIU_SUM, c->comm));
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, counts, 1, MPIU_INT, MPI_SUM, c->comm));
+  c->surface_area = c->symmetry * area;
+  c->nedge        = counts[0];
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode IndContactCreate(IndMesh mesh, IndDisc disc, IndBC bc, IndContact *out)
 {
   IndContact         c;
@@ -208,8 +315,10 @@ PetscErrorCode IndContactCreate(IndMesh mesh, IndDisc disc, IndBC bc, IndContact
   PetscFunctionBeginUser;
   *out = NULL;
   PetscCall(PetscMemzero(&ind, sizeof(ind)));
-  PetscOptionsBegin(comm, NULL, "Rigid indenter", "Contact");
-  PetscCall(PetscOptionsEnum("-indenter_type", "Rigid indenter shape", "", IndIndenterTypes, (PetscEnum)ind.type, (PetscEnum *)&ind.type, &has_type));
+  PetscOptionsBegin(comm, NULL, IND_TITLE "Indenter (-indenter_type)", "Contact");
+  PetscCall(IndOptionsEnum("-indenter_type",
+    "Rigid indenter shape; without it, no indenter (a run of prescribed displacements)", IndIndenterTypes,
+    (PetscEnum)ind.type, (PetscEnum *)&ind.type, &has_type));
   PetscOptionsEnd();
   if (!has_type) PetscFunctionReturn(PETSC_SUCCESS);
 
@@ -219,33 +328,51 @@ PetscErrorCode IndContactCreate(IndMesh mesh, IndDisc disc, IndBC bc, IndContact
   c->rtol      = 1e-6;
   c->pen_rtol  = 1e-4;
   c->monitor   = PETSC_FALSE;
-  PetscOptionsBegin(comm, NULL, "Rigid indenter and contact", "Contact");
-  PetscCall(PetscOptionsReal("-indenter_sharp_rounding", "Sharp cones and pyramids: the contact sees them rounded by this radius (nm; default 1e-4 of -load_depth; 0: exactly sharp)", "", c->rounding, &c->rounding, &has_rounding));
-  PetscCall(PetscOptionsReal("-indenter_radius", "Sphere, tip (cone, pyramids; 0 sharp) or punch radius (nm)", "", radius, &radius, &has_radius));
-  PetscCall(PetscOptionsReal("-indenter_angle", "Cone half-angle or pyramid face-to-axis angle (degrees; 0: the standard one)", "", angle, &angle, NULL));
-  PetscCall(PetscOptionsReal("-indenter_rotation", "Pyramids: azimuth of the first face's normal (degrees)", "", rotation, &rotation, NULL));
-  PetscCall(PetscOptionsRealArray("-indenter_axis", "x,y of the indenter's axis (nm)", "", ind.axis, &naxis, &has_axis));
-  PetscCall(PetscOptionsReal("-indenter_surface", "z of the undeformed surface where depth 0 touches (nm; default: highest contact node)", "", ind.surface, &ind.surface, &has_surface));
-  PetscCall(PetscOptionsString("-contact_surface", "Surface whose nodes may touch the indenter", "", surface, surface, sizeof(surface), NULL));
-  PetscCall(PetscOptionsReal("-contact_friction", "Coulomb friction coefficient", "", c->mu, &c->mu, NULL));
-  PetscCall(PetscOptionsEnum("-contact_uzawa", "Contact algorithm: newton (semi-smooth Newton, reactions from the residual) or fixed_point (reactions frozen in each Newton solve, updated between them)", "", IndUzawaTypes, (PetscEnum)c->variant, (PetscEnum *)&c->variant, NULL));
+  PetscOptionsBegin(comm, NULL, IND_TITLE "Indenter and contact (-indenter_*, -contact_*)", "Contact");
+  PetscCall(IndOptionsReal("-indenter_sharp_rounding",
+    "Sharp cones and pyramids: the contact sees them rounded by this radius (0: exactly sharp)", "nm",
+    "1e-4 of -load_depth", c->rounding, &c->rounding, &has_rounding));
+  PetscCall(IndOptionsReal("-indenter_radius", "Sphere, tip (cone, pyramids; 0 sharp) or punch radius", "nm",
+    "required for sphere and flat; 0 (sharp) for the others", radius, &radius, &has_radius));
+  PetscCall(IndOptionsReal("-indenter_angle", "Cone half-angle or pyramid face-to-axis angle (0: the standard one)",
+    "degrees", NULL, angle, &angle, NULL));
+  PetscCall(IndOptionsReal("-indenter_rotation",
+    "Pyramids: azimuth of the first face's normal; on a half or quarter model it must keep the symmetry planes mirror "
+    "planes of the pyramid", "degrees", NULL, rotation, &rotation, NULL));
+  PetscCall(IndOptionsRealArray("-indenter_axis", "Position of the indenter's (vertical) axis", "x,y in nm", NULL,
+    ind.axis, &naxis, &has_axis));
+  PetscCall(IndOptionsReal("-indenter_surface", "z of the undeformed surface, where depth 0 touches", "nm",
+    "the highest node of -contact_surface", ind.surface, &ind.surface, &has_surface));
+  PetscCall(IndOptionsString("-contact_surface", "Surface whose nodes may touch the indenter", "surface", NULL, surface,
+    surface, sizeof(surface), NULL));
+  PetscCall(IndOptionsReal("-contact_friction", "Coulomb friction coefficient", "", NULL, c->mu, &c->mu, NULL));
+  PetscCall(IndOptionsEnum("-contact_uzawa",
+    "Contact algorithm: newton (semi-smooth Newton, reactions from the residual) or fixed_point (reactions frozen in "
+    "each Newton solve, updated between them)", IndUzawaTypes, (PetscEnum)c->variant, (PetscEnum *)&c->variant, NULL));
   /* Newton: rho sets which nodes are tried active and scales their rows, not the solution; the
      stiffness diagonal keeps those rows as well conditioned as the rest. The fixed point diverges
      once rho exceeds 2 / (largest eigenvalue of the contact compliance), about the diagonal. */
   c->rho_scale = c->variant == IND_UZAWA_NEWTON ? 1.0 : 0.3;
   c->max_outer = c->variant == IND_UZAWA_NEWTON ? 20 : 200;
-  PetscCall(PetscOptionsReal("-contact_rho_scale", "rho = scale * mean stiffness diagonal of each contact node (default 1 newton, 0.3 fixed_point)", "", c->rho_scale, &c->rho_scale, NULL));
-  PetscCall(PetscOptionsReal("-contact_uzawa_rtol", "Outer loop: relative change of the reactions", "", c->rtol, &c->rtol, NULL));
-  PetscCall(PetscOptionsReal("-contact_penetration_rtol", "Outer loop: largest penetration relative to the largest depth", "", c->pen_rtol, &c->pen_rtol, NULL));
+  PetscCall(IndOptionsReal("-contact_rho_scale", "rho = scale * mean stiffness diagonal of each contact node", "",
+    "1 newton, 0.3 fixed_point", c->rho_scale, &c->rho_scale, NULL));
+  PetscCall(IndOptionsReal("-contact_uzawa_rtol", "Outer loop: relative change of the reactions", "", NULL, c->rtol,
+    &c->rtol, NULL));
+  PetscCall(IndOptionsReal("-contact_penetration_rtol", "Outer loop: largest penetration relative to the largest depth",
+    "", NULL, c->pen_rtol, &c->pen_rtol, NULL));
   {
     PetscInt gap = 0;
     const char *const gaps[] = {"current", "reference", "IndGap", "IND_GAP_", NULL};
-    PetscCall(PetscOptionsEnum("-contact_gap", "Gap at the current position of the node, or at its undeformed horizontal position (small-deformation contact)", "", gaps, (PetscEnum)gap, (PetscEnum *)&gap, NULL));
+    PetscCall(IndOptionsEnum("-contact_gap",
+      "Gap at the current position of the node, or at its undeformed horizontal position (small-deformation contact)",
+      gaps, (PetscEnum)gap, (PetscEnum *)&gap, NULL));
     c->gap_current = gap == 0 ? PETSC_TRUE : PETSC_FALSE;
   }
-  PetscCall(PetscOptionsInt("-contact_uzawa_max_it", "Outer iterations before the step fails (default 20 newton, 200 fixed_point)", "", c->max_outer, &c->max_outer, NULL));
-  PetscCall(PetscOptionsBool("-contact_monitor", "Print a line per outer iteration", "", c->monitor, &c->monitor, NULL));
-  PetscCall(PetscOptionsReal("-contact_symmetry_factor", "Load multiplier of a symmetric part model (default: 2 per symmetry plane through the axis)", "", symmetry, &symmetry, &has_sym));
+  PetscCall(IndOptionsInt("-contact_uzawa_max_it", "Outer iterations before the step fails",
+    "20 newton, 200 fixed_point", c->max_outer, &c->max_outer, NULL));
+  PetscCall(IndOptionsBool("-contact_monitor", "Print a line per outer iteration", c->monitor, &c->monitor, NULL));
+  PetscCall(IndOptionsReal("-contact_symmetry_factor", "Load multiplier of a symmetric part model", "",
+    "2 per symmetry plane through the axis", symmetry, &symmetry, &has_sym));
   PetscOptionsEnd();
   ind.radius   = radius;
   ind.angle    = angle * deg;
@@ -254,7 +381,8 @@ PetscErrorCode IndContactCreate(IndMesh mesh, IndDisc disc, IndBC bc, IndContact
   PetscCheck(radius >= 0 && (radius > 0 || (ind.type != IND_INDENTER_SPHERE && ind.type != IND_INDENTER_FLAT)), comm, PETSC_ERR_ARG_OUTOFRANGE, "-indenter_radius must be %s, got %g", ind.type == IND_INDENTER_SPHERE || ind.type == IND_INDENTER_FLAT ? "> 0" : ">= 0", (double)radius);
   PetscCheck(angle >= 0 && angle < 90, comm, PETSC_ERR_ARG_OUTOFRANGE, "-indenter_angle must lie in (0, 90) degrees (0: the standard angle), got %g", (double)angle);
   PetscCheck(!IndIndenterSetUp(&ind), comm, PETSC_ERR_ARG_OUTOFRANGE, "-indenter_type %s: bad -indenter_radius or -indenter_angle", IndIndenterTypes[ind.type]);
-  PetscCheck(!has_axis || naxis == 2, comm, PETSC_ERR_ARG_WRONG, "-indenter_axis needs two values x,y");
+  PetscCheck(!has_axis || naxis == 2, comm, PETSC_ERR_ARG_SIZ,
+    "-indenter_axis needs two values x,y (nm), got %" PetscInt_FMT, naxis);
   PetscCheck(!has_rounding || c->rounding >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-indenter_sharp_rounding must be >= 0 (nm), got %g", (double)c->rounding);
   if (!has_rounding) c->rounding = -1; /* set from the depth at setup */
   PetscCheck(c->mu >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-contact_friction must be >= 0, got %g", (double)c->mu);
@@ -268,6 +396,11 @@ PetscErrorCode IndContactCreate(IndMesh mesh, IndDisc disc, IndBC bc, IndContact
   PetscCheck(!(disc->simplex && disc->degree == 2), comm, PETSC_ERR_SUP, "Contact on P2 tetrahedra is not supported: the consistent nodal forces of a pressure are zero at the corners of their 6-node faces. Use P1 tetrahedra or Q1/Q2 hexahedra for the contact region");
 
   /* The owned nodes of the contact surface, their positions and tributary areas. */
+  {
+    DMLabel label;
+    PetscCall(IndMeshGetRegionLabel(mesh, surface, 2, "-contact_surface", &label));
+    if (!IndHelpListing()) PetscCall(IndMeshCheckRegionNotEmpty(mesh, surface, 2, "-contact_surface"));
+  }
   PetscCall(DMCreateGlobalVector(disc->dm, &G));
   PetscCall(SurfaceNodes(mesh, disc, surface, NULL, G));
   PetscCall(IndDiscNodeCoordinates(disc, &nodes));
@@ -280,6 +413,7 @@ PetscErrorCode IndContactCreate(IndMesh mesh, IndDisc disc, IndBC bc, IndContact
   PetscCall(PetscMalloc5(c->n, &c->row, c->n, &c->grow, 3 * c->n, &c->X, c->n, &c->kdiag, c->n, &c->A));
   PetscCall(PetscCalloc5(3 * c->n, &c->R, 3 * c->n, &c->Rc, 3 * c->n, &c->L, 3 * c->n, &c->Uc, c->n, &c->status));
   PetscCall(PetscCalloc2(3 * c->n, &c->Lu, c->n, &c->fixed));
+  PetscCall(PetscCalloc1(c->n, &c->edge));
   c->n = 0;
   {
     PetscReal top = -PETSC_MAX_REAL;
@@ -288,13 +422,16 @@ PetscErrorCode IndContactCreate(IndMesh mesh, IndDisc disc, IndBC bc, IndContact
         c->row[c->n]  = k;
         c->grow[c->n] = rstart + k;
         for (int d = 0; d < 3; ++d) c->X[3 * c->n + d] = PetscRealPart(x[k + d]);
-        c->A[c->n] = PetscRealPart(g[k + 2]);
-        top        = PetscMax(top, c->X[3 * c->n + 2]);
+        c->A[c->n]    = PetscRealPart(g[k + 2]);
+        c->edge[c->n] = PetscRealPart(g[k + 1]) < 2 * PETSC_PI * (1 - 1e-6) ? PETSC_TRUE : PETSC_FALSE;
+        top           = PetscMax(top, c->X[3 * c->n + 2]);
         c->n++;
       }
     PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &top, 1, MPIU_REAL, MPIU_MAX, comm));
-    PetscCheck(top > -PETSC_MAX_REAL, comm, PETSC_ERR_ARG_WRONG, "-contact_surface '%s' has no nodes", surface);
+    PetscCheck(top > -PETSC_MAX_REAL, comm, PETSC_ERR_USER_INPUT,
+      "-contact_surface '%s' has no nodes (the surface is empty)", surface);
     if (!has_surface) ind.surface = top;
+    c->top = top;
   }
   PetscCall(VecRestoreArrayRead(G, &g));
   PetscCall(VecRestoreArrayRead(nodes, &x));
@@ -302,6 +439,8 @@ PetscErrorCode IndContactCreate(IndMesh mesh, IndDisc disc, IndBC bc, IndContact
   PetscCall(VecDestroy(&G));
   c->indenter = ind;
   c->symmetry = has_sym ? symmetry : SymmetryFactor(bc, &ind);
+  if (!IndHelpListing()) PetscCall(CheckRotation(comm, bc, &ind, rotation));
+  PetscCall(SurfaceEdgeAndSize(c, mesh, bc));
   c->mesh     = mesh;
   c->disc     = disc;
   PetscCall(PetscStrncpy(c->surface, surface, sizeof(c->surface)));
@@ -316,7 +455,48 @@ PetscErrorCode IndContactDestroy(IndContact *c)
   PetscCall(PetscFree5((*c)->row, (*c)->grow, (*c)->X, (*c)->kdiag, (*c)->A));
   PetscCall(PetscFree5((*c)->R, (*c)->Rc, (*c)->L, (*c)->Uc, (*c)->status));
   PetscCall(PetscFree2((*c)->Lu, (*c)->fixed));
+  PetscCall(PetscFree((*c)->edge));
   PetscCall(PetscFree(*c));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Before solving: the depth must stay inside the body, and the indenter must reach the surface. The
+   body moves only where something pushes it; with no boundary displacement prescribed, a surface the
+   rigid indenter does not reach at full depth in its undeformed position is never touched. */
+static PetscErrorCode CheckReach(IndContact c, IndBC bc, PetscReal depth_max)
+{
+  const IndIndenter *ind    = &c->indenter;
+  const PetscReal    lowest = ind->surface - depth_max;
+  PetscBool          moves  = PETSC_FALSE;
+  PetscReal          gmin   = PETSC_MAX_REAL;
+
+  PetscFunctionBeginUser;
+  PetscCheck(lowest > c->zmin, c->comm, PETSC_ERR_USER_INPUT,
+             "-load_depth %.6g nm goes through the body: the indenter's lowest point would reach z = %.6g nm, at or "
+             "below the mesh's bottom at z = %.6g nm (the body is %.6g nm thick under the contact surface '%s' at "
+             "z = %.6g nm)",
+             (double)depth_max, (double)lowest, (double)c->zmin, (double)(ind->surface - c->zmin), c->surface,
+             (double)ind->surface);
+  for (PetscInt k = 0; k < bc->nspec; ++k)
+    if (bc->spec[k].fn || bc->spec[k].value[0] != 0 || bc->spec[k].value[1] != 0 || bc->spec[k].value[2] != 0)
+      moves = PETSC_TRUE;
+  if (moves) PetscFunctionReturn(PETSC_SUCCESS); /* decided after loading instead (run_checks.c) */
+  {
+    IndIndenter at = *ind;
+    at.depth       = depth_max;
+    for (PetscInt i = 0; i < c->n; ++i) {
+      PetscReal gap, nrm[3];
+      IndIndenterGap(&at, c->X + 3 * i, &gap, nrm);
+      gmin = PetscMin(gmin, gap);
+    }
+  }
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &gmin, 1, MPIU_REAL, MPIU_MIN, c->comm));
+  PetscCheck(gmin <= 0, c->comm, PETSC_ERR_USER_INPUT,
+             "The indenter never touches the contact surface '%s': at the full depth (-load_depth %.6g nm) its lowest "
+             "point is at z = %.6g nm and it stays %.6g nm away from the nearest node (surface's highest node at "
+             "z = %.6g nm; -indenter_surface %.6g nm, -indenter_axis %.6g,%.6g nm)",
+             c->surface, (double)depth_max, (double)lowest, (double)gmin, (double)c->top, (double)ind->surface,
+             (double)ind->axis[0], (double)ind->axis[1]);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -344,6 +524,7 @@ PetscErrorCode IndContactSetUp(IndContact c, IndBC bc, Mat K, PetscReal depth_ma
   PetscCall(VecDestroy(&d));
   c->pen_atol = c->pen_rtol * depth_max;
   c->indenter.rounding = c->rounding >= 0 ? c->rounding : 1e-4 * depth_max;
+  if (!IndHelpListing()) PetscCall(CheckReach(c, bc, depth_max));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -443,6 +624,11 @@ PetscErrorCode IndContactUpdate(IndContact c, Vec U, IndContactSummary *sum)
   sum->slip        = cnt[IND_CONTACT_SLIP];
   sum->contact     = sum->stick + sum->slip;
   sum->change      = red[1] > 0 ? PetscSqrtReal(red[0] / red[1]) : (red[0] > 0 ? 1.0 : 0.0);
+  /* Newton with every node open: their rows were the equilibrium rows, which Newton has solved, so the
+     contact is converged (a body strained by its boundary, which the indenter does not touch, left the
+     relative change at 1 for ever). */
+  if (c->variant == IND_UZAWA_NEWTON && red[1] == 0 && cnt[IND_CONTACT_STICK] + cnt[IND_CONTACT_SLIP] == 0)
+    sum->change = 0;
   sum->mismatch    = PetscSqrtReal(red[0]);
   sum->load        = c->symmetry * red[2];
   sum->area        = c->symmetry * red[3];

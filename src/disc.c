@@ -134,9 +134,11 @@ PetscErrorCode IndDiscCreate(IndMesh mesh, IndDisc *out)
   PetscCall(PetscCalloc1(1, &disc));
   disc->dm     = mesh->dm;
   disc->degree = 1;
-  PetscOptionsBegin(comm, NULL, "Discretisation", "Disc");
-  PetscCall(PetscOptionsInt("-disc_degree", "Polynomial degree of the displacement: 1 (P1/Q1) or 2 (P2/Q2)", "", disc->degree, &disc->degree, NULL));
-  PetscCall(PetscOptionsInt("-disc_quadrature_order", "Order of the quadrature rule (default: 0 for P1 tetrahedra, else PETSc's choice for the degree)", "", qorder, &qorder, NULL));
+  PetscOptionsBegin(comm, NULL, IND_TITLE "Discretisation (-disc_*)", "Disc");
+  PetscCall(IndOptionsInt("-disc_degree", "Polynomial degree of the displacement: 1 (P1/Q1) or 2 (P2/Q2)", NULL,
+    disc->degree, &disc->degree, NULL));
+  PetscCall(IndOptionsInt("-disc_quadrature_order", "Order of the quadrature rule",
+    "0 for P1 tetrahedra, else PETSc's choice for the degree", qorder, &qorder, NULL));
   PetscOptionsEnd();
   /* The strain of a P1 tetrahedron is constant, so one point integrates its stiffness, stress and
      history exactly; PETSc's default rule has 8, all in the same state, at 8 times the cost of

@@ -12,24 +12,36 @@ PetscErrorCode IndLoadPathSetFromOptions(MPI_Comm comm, PetscBool unload_default
   lp->max_cutbacks = 10;
   lp->unload       = unload_default;
   lp->unload_growth = 1.2;
-  PetscOptionsBegin(comm, NULL, "Load stepping", "Load");
-  PetscCall(PetscOptionsReal("-load_depth", "Largest indenter depth (nm), reached at the end of loading", "", lp->depth_max, &lp->depth_max, NULL));
-  PetscCall(PetscOptionsReal("-load_hold", "Length of the hold at full load, in units of the loading segment", "", lp->hold, &lp->hold, NULL));
-  PetscCall(PetscOptionsBool("-load_unload", "Unload after loading (and holding)", "", lp->unload, &lp->unload, NULL));
-  PetscCall(PetscOptionsInt("-load_steps", "Number of load steps when none is cut back", "", steps, &steps, NULL));
+  PetscOptionsBegin(comm, NULL, IND_TITLE "Load program and stepping (-load_*)", "Load");
+  PetscCall(IndOptionsReal("-load_depth", "Largest indenter depth, reached at the end of loading", "nm",
+    "required with -indenter_type", lp->depth_max, &lp->depth_max, NULL));
+  PetscCall(IndOptionsReal("-load_hold", "Length of the hold at full load, in units of the loading segment", "", NULL,
+    lp->hold, &lp->hold, NULL));
+  PetscCall(IndOptionsBool("-load_unload", "Unload after loading (and holding)", lp->unload, &lp->unload, NULL));
+  PetscCall(IndOptionsInt("-load_steps", "Number of loading steps when none is cut back", NULL, steps, &steps, NULL));
   unload_steps = steps;
-  PetscCall(PetscOptionsInt("-load_unload_steps", "The first unloading increment is 1/N of the depth (default -load_steps): Oliver-Pharr fits the top of the unloading curve, which falls steeply", "", unload_steps, &unload_steps, NULL));
-  PetscCall(PetscOptionsReal("-load_unload_growth", "Factor on the increment after each accepted unloading step (up to the loading increment)", "", lp->unload_growth, &lp->unload_growth, NULL));
+  PetscCall(IndOptionsInt("-load_unload_steps",
+    "The first unloading increment is 1/N of the depth: Oliver-Pharr fits the top of the unloading curve, which falls "
+    "steeply", "-load_steps", unload_steps, &unload_steps, NULL));
+  PetscCall(IndOptionsReal("-load_unload_growth",
+    "Factor on the increment after each accepted unloading step (up to the loading increment)", "", NULL,
+    lp->unload_growth, &lp->unload_growth, NULL));
   lp->dt_initial = 1.0 / PetscMax(steps, 1);
   lp->dt_unload  = 1.0 / PetscMax(unload_steps, 1);
   lp->dt_max     = lp->dt_initial;
   lp->dt_min     = PetscMin(lp->dt_initial, lp->dt_unload) / 1024;
-  PetscCall(PetscOptionsReal("-load_max_increment", "Largest load-factor increment a step may grow to", "", lp->dt_max, &lp->dt_max, NULL));
-  PetscCall(PetscOptionsReal("-load_min_increment", "Smallest load-factor increment before giving up", "", lp->dt_min, &lp->dt_min, NULL));
-  PetscCall(PetscOptionsReal("-load_cutback", "Factor on the increment after a failed step", "", lp->cutback, &lp->cutback, NULL));
-  PetscCall(PetscOptionsReal("-load_growth", "Factor on the increment after an easy step", "", lp->growth, &lp->growth, NULL));
-  PetscCall(PetscOptionsInt("-load_easy_its", "Newton iterations at or below which a step is easy", "", lp->easy_its, &lp->easy_its, NULL));
-  PetscCall(PetscOptionsInt("-load_max_cutbacks", "Failed attempts in a row before the run stops", "", lp->max_cutbacks, &lp->max_cutbacks, NULL));
+  PetscCall(IndOptionsReal("-load_max_increment", "Largest load-factor increment a step may grow to", "",
+    "1/-load_steps", lp->dt_max, &lp->dt_max, NULL));
+  PetscCall(IndOptionsReal("-load_min_increment", "Smallest load-factor increment before giving up", "",
+    "1/1024 of the smaller first increment", lp->dt_min, &lp->dt_min, NULL));
+  PetscCall(IndOptionsReal("-load_cutback", "Factor on the increment after a failed step", "", NULL, lp->cutback,
+    &lp->cutback, NULL));
+  PetscCall(IndOptionsReal("-load_growth", "Factor on the increment after an easy step", "", NULL, lp->growth,
+    &lp->growth, NULL));
+  PetscCall(IndOptionsInt("-load_easy_its", "Newton iterations at or below which a step is easy", NULL, lp->easy_its,
+    &lp->easy_its, NULL));
+  PetscCall(IndOptionsInt("-load_max_cutbacks", "Failed attempts in a row before the run stops", NULL, lp->max_cutbacks,
+    &lp->max_cutbacks, NULL));
   PetscOptionsEnd();
   PetscCheck(steps >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-load_steps must be >= 1, got %" PetscInt_FMT, steps);
   PetscCheck(unload_steps >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-load_unload_steps must be >= 1, got %" PetscInt_FMT, unload_steps);
@@ -101,8 +113,12 @@ PetscErrorCode IndLoadPathReject(IndLoadPath *lp, MPI_Comm comm, const char why[
   PetscFunctionBeginUser;
   lp->cutbacks++;
   lp->cutbacks_in_a_row++;
-  PetscCheck(lp->cutbacks_in_a_row <= lp->max_cutbacks, comm, PETSC_ERR_NOT_CONVERGED, "Load step from load factor %g failed %" PetscInt_FMT " times in a row (last: %s); raise -load_max_cutbacks or refine -load_steps", (double)lp->t, lp->cutbacks_in_a_row, why);
+  PetscCheck(lp->cutbacks_in_a_row <= lp->max_cutbacks, comm, PETSC_ERR_NOT_CONVERGED,
+    "Load step from load factor %.6g failed %" PetscInt_FMT " times in a row (last: %s); raise -load_max_cutbacks or "
+    "refine -load_steps", (double)lp->t, lp->cutbacks_in_a_row, why);
   lp->dt *= lp->cutback;
-  PetscCheck(lp->dt >= lp->dt_min * (1 - IND_LOAD_END_TOL), comm, PETSC_ERR_NOT_CONVERGED, "Load step from load factor %g failed (%s) and the increment %g would fall below -load_min_increment %g", (double)lp->t, why, (double)lp->dt, (double)lp->dt_min);
+  PetscCheck(lp->dt >= lp->dt_min * (1 - IND_LOAD_END_TOL), comm, PETSC_ERR_NOT_CONVERGED,
+    "Load step from load factor %.6g failed (%s) and the increment %.6g would fall below -load_min_increment %.6g",
+    (double)lp->t, why, (double)lp->dt, (double)lp->dt_min);
   PetscFunctionReturn(PETSC_SUCCESS);
 }

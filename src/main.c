@@ -1,20 +1,42 @@
 static const char help[] = "indent: finite-element nanoindentation of elasto-plastic films (PETSc).\n"
-                           "With -help, lists every option the given inputs read (with their values) and exits without solving;\n"
-                           "see doc/ for a guide.\n";
+                           "With -help, lists every option the given inputs read (with the values given) and exits\n"
+                           "without solving, meshing a .geo or writing a file; see doc/options.md for a guide.\n";
 
+#include <string.h>
 #include "ind_app.h"
+
+static PetscErrorCode Run(void)
+{
+  IndApp app;
+
+  PetscFunctionBeginUser;
+  PetscCall(IndAppCreate(PETSC_COMM_WORLD, &app));
+  /* the set-up has read (and listed) every option; a user asking for the list does not want the run */
+  if (!IndHelpListing()) PetscCall(IndAppRun(app));
+  PetscCall(IndAppDestroy(&app));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* "-help intro" prints PETSc's introduction and exits inside PetscInitialize: it keeps PETSc's printing. */
+static PetscBool HelpIntro(int argc, char **argv)
+{
+  for (int k = 1; k + 1 < argc; ++k)
+    if (!strcmp(argv[k], "-help") && !strcmp(argv[k + 1], "intro")) return PETSC_TRUE;
+  return PETSC_FALSE;
+}
 
 int main(int argc, char **argv)
 {
-  IndApp    app;
-  PetscBool listing;
+  PetscErrorCode ierr;
+  PetscBool      intro = HelpIntro(argc, argv);
 
-  PetscCall(PetscInitialize(&argc, &argv, NULL, help));
-  PetscCall(PetscOptionsHasHelp(NULL, &listing));
-  PetscCall(IndAppCreate(PETSC_COMM_WORLD, &app));
-  /* the set-up has read (and listed) every option; a user asking for the list does not want the run */
-  if (!listing) PetscCall(IndAppRun(app));
-  PetscCall(IndAppDestroy(&app));
-  PetscCall(PetscFinalize());
-  return 0;
+  if (!intro) IndHelpCaptureBegin();
+  ierr = PetscInitialize(&argc, &argv, NULL, intro ? help : NULL);
+  if (ierr) return (int)ierr;
+  ierr = IndErrorSetUp("indent");
+  if (!ierr) ierr = IndHelpCaptureEnd();
+  if (!ierr) ierr = Run();
+  /* a listing stopped by a bad input still shows what it read, then the error */
+  if (IndHelpListing()) (void)IndHelpPrint(help);
+  return IndErrorFinish(ierr);
 }

@@ -15,39 +15,53 @@ static PetscErrorCode ReadPlastic(MPI_Comm comm, const char prefix[], IndMateria
 {
   IndPlasticParams *pp = &m->plastic;
   PetscBool         set;
+  char              title[2 * IND_NAME_LEN + 64];
 
   PetscFunctionBeginUser;
-  PetscOptionsBegin(comm, prefix, "Elasto-plastic material of a volume region", "Material");
-  PetscCall(PetscOptionsEnum("-hardening", "Isotropic hardening law", "", IndHardeningTypes, (PetscEnum)pp->hardening, (PetscEnum *)&pp->hardening, NULL));
-  PetscCall(PetscOptionsReal("-yield", "Initial yield stress R0 (GPa)", "", pp->R0, &pp->R0, &set));
-  PetscCall(RequirePlastic(comm, m->region, "yield", set, "initial yield stress, GPa"));
+  PetscCall(PetscSNPrintf(title, sizeof(title), IND_TITLE "Plasticity of volume region '%s' (-%smodel plastic)",
+    m->region, prefix));
+  PetscOptionsBegin(comm, prefix, title, "Material");
+  PetscCall(IndOptionsEnum("-hardening", "Isotropic hardening law", IndHardeningTypes, (PetscEnum)pp->hardening,
+    (PetscEnum *)&pp->hardening, NULL));
+  PetscCall(IndOptionsReal("-yield", "Initial yield stress R0", "GPa", IND_REQUIRED, pp->R0, &pp->R0, &set));
+  if (!IndHelpListing()) PetscCall(RequirePlastic(comm, m->region, "yield", set, "initial yield stress, GPa"));
   if (pp->hardening == IND_HARDENING_VOCE) {
-    PetscCall(PetscOptionsReal("-saturation", "Voce saturation stress Rs (GPa)", "", pp->Rs, &pp->Rs, &set));
-    PetscCall(RequirePlastic(comm, m->region, "saturation", set, "Voce saturation stress, GPa"));
-    PetscCall(PetscOptionsReal("-voce_rate", "Voce rate gamma", "", pp->gamma, &pp->gamma, &set));
-    PetscCall(RequirePlastic(comm, m->region, "voce_rate", set, "Voce rate"));
+    PetscCall(IndOptionsReal("-saturation", "Voce saturation stress Rs", "GPa", IND_REQUIRED " with voce", pp->Rs,
+      &pp->Rs, &set));
+    if (!IndHelpListing()) PetscCall(RequirePlastic(comm, m->region, "saturation", set, "Voce saturation stress, GPa"));
+    PetscCall(IndOptionsReal("-voce_rate", "Voce rate gamma", "", IND_REQUIRED " with voce", pp->gamma, &pp->gamma,
+      &set));
+    if (!IndHelpListing()) PetscCall(RequirePlastic(comm, m->region, "voce_rate", set, "Voce rate"));
   } else {
-    PetscCall(PetscOptionsReal("-hardening_slope", "Linear isotropic hardening slope h (GPa)", "", pp->h, &pp->h, NULL));
+    PetscCall(IndOptionsReal("-hardening_slope", "Linear isotropic hardening slope h", "GPa", NULL, pp->h, &pp->h,
+      NULL));
   }
-  PetscCall(PetscOptionsReal("-kinematic", "Prager kinematic hardening modulus H (GPa)", "", pp->H, &pp->H, NULL));
-  PetscCall(PetscOptionsInt("-return_max_it", "Iteration cap of the scalar return-map solve", "", pp->max_iterations, &pp->max_iterations, NULL));
+  PetscCall(IndOptionsReal("-kinematic", "Prager kinematic hardening modulus H", "GPa", NULL, pp->H, &pp->H, NULL));
+  PetscCall(IndOptionsInt("-return_max_it", "Iteration cap of the scalar return-map solve", "0, meaning 100",
+    pp->max_iterations, &pp->max_iterations, NULL));
   PetscOptionsEnd();
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 static PetscErrorCode ReadMaterial(MPI_Comm comm, const char region[], IndMaterial *m)
 {
-  char      prefix[IND_NAME_LEN + 2], opt[IND_NAME_LEN + 32];
+  char      prefix[IND_NAME_LEN + 2], opt[IND_NAME_LEN + 32], title[2 * IND_NAME_LEN + 64];
   PetscBool has_E, has_nu;
 
   PetscFunctionBeginUser;
   PetscCall(PetscStrncpy(m->region, region, sizeof(m->region)));
   PetscCall(PetscSNPrintf(prefix, sizeof(prefix), "%s_", region));
-  PetscOptionsBegin(comm, prefix, "Material of a volume region", "Material");
-  PetscCall(PetscOptionsReal("-young", "Young's modulus (GPa)", "", m->young, &m->young, &has_E));
-  PetscCall(PetscOptionsReal("-poisson", "Poisson's ratio", "", m->poisson, &m->poisson, &has_nu));
-  PetscCall(PetscOptionsEnum("-model", "Constitutive model", "", IndModelTypes, (PetscEnum)m->model, (PetscEnum *)&m->model, NULL));
+  PetscCall(PetscSNPrintf(title, sizeof(title), IND_TITLE "Material of volume region '%s' (-%s*)", region, prefix));
+  PetscOptionsBegin(comm, prefix, title, "Material");
+  PetscCall(IndOptionsReal("-young", "Young's modulus", "GPa", IND_REQUIRED, m->young, &m->young, &has_E));
+  PetscCall(IndOptionsReal("-poisson", "Poisson's ratio", "", IND_REQUIRED, m->poisson, &m->poisson, &has_nu));
+  PetscCall(IndOptionsEnum("-model", "Constitutive model", IndModelTypes, (PetscEnum)m->model, (PetscEnum *)&m->model,
+    NULL));
   PetscOptionsEnd();
+  if (IndHelpListing()) { /* the listing reads, it does not judge */
+    if (m->model == IND_MODEL_PLASTIC) PetscCall(ReadPlastic(comm, prefix, m));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
   PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%syoung", prefix));
   PetscCheck(has_E, comm, PETSC_ERR_ARG_WRONG, "Region '%s' needs a material: option %s (GPa) is missing", region, opt);
   PetscCheck(m->young > 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "%s must be > 0 (GPa), got %g", opt, (double)m->young);
@@ -77,6 +91,7 @@ PetscErrorCode IndMaterialsCreate(IndMesh mesh, IndDisc disc, IndMaterials *out)
     DMLabel label;
     IS      cells;
     if (mesh->regions[r].dim != 3) continue;
+    if (!IndHelpListing()) PetscCall(IndMeshCheckRegionNotEmpty(mesh, mesh->regions[r].name, 3, NULL));
     PetscCall(ReadMaterial(comm, mesh->regions[r].name, &mats->mat[mats->n]));
     PetscCall(DMGetLabel(mesh->dm, mesh->regions[r].name, &label));
     PetscCall(DMLabelGetStratumIS(label, 1, &cells));
@@ -101,7 +116,9 @@ PetscErrorCode IndMaterialsCreate(IndMesh mesh, IndDisc disc, IndMaterials *out)
       if (!unassigned++) first = disc->cStart + i;
     }
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &unassigned, 1, MPIU_INT, MPI_SUM, comm));
-  PetscCheck(!unassigned, comm, PETSC_ERR_ARG_WRONG, "%" PetscInt_FMT " cells of mesh '%s' (e.g. local cell %" PetscInt_FMT ") belong to no physical volume: give every volume a physical name in gmsh", unassigned, mesh->source, first);
+  PetscCheck(!unassigned || IndHelpListing(), comm, PETSC_ERR_ARG_WRONG,
+    "%" PetscInt_FMT " cells of mesh '%s' (e.g. local cell %" PetscInt_FMT ") belong to no physical volume: give every "
+    "volume a physical name in gmsh", unassigned, mesh->source, first);
   *out = mats;
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -5,39 +5,68 @@
 #include "ind_files.h"
 
 /* gmsh writes "dim tag "name"" lines in $PhysicalNames in both format 2.2 and 4.1, also in binary
-   files; PETSc turns the tags into "Cell Sets"/"Face Sets" values, and we give them their names. */
+   files. On rank 0; why says what is wrong with the file, or is "". */
+static void ParsePhysicalNames(const char file[], int *n, int dims[], int tags[], char names[][IND_NAME_LEN],
+  char why[], size_t len)
+{
+  FILE *fp = fopen(file, "r");
+  char  line[1024];
+
+  *n     = 0;
+  why[0] = 0;
+  if (!fp) {
+    snprintf(why, len, "Cannot open mesh file '%s' (-mesh_file)", file);
+    return;
+  }
+  while (fgets(line, sizeof(line), fp)) {
+    if (strncmp(line, "$PhysicalNames", 14)) {
+      if (!strncmp(line, "$Nodes", 6) || !strncmp(line, "$Entities", 9)) break;
+      continue;
+    }
+    if (!fgets(line, sizeof(line), fp) || sscanf(line, "%d", n) != 1 || *n < 0) {
+      snprintf(why, len, "Malformed $PhysicalNames in mesh file '%s' (-mesh_file)", file);
+      *n = 0;
+      break;
+    }
+    if (*n > IND_MAX_REGIONS) {
+      snprintf(why, len, "Mesh file '%s' (-mesh_file) has %d physical names; at most %d are supported", file, *n,
+        IND_MAX_REGIONS);
+      *n = 0;
+      break;
+    }
+    for (int i = 0; i < *n && !why[0]; ++i) {
+      char *q1 = NULL, *q2 = NULL;
+      if (fgets(line, sizeof(line), fp) && sscanf(line, "%d %d", &dims[i], &tags[i]) == 2) {
+        q1 = strchr(line, '"');
+        q2 = q1 ? strchr(q1 + 1, '"') : NULL;
+      }
+      if (!q1 || !q2 || q2 - q1 - 1 >= IND_NAME_LEN) snprintf(why, len,
+        "Malformed physical name on line %d of $PhysicalNames in mesh file '%s' (-mesh_file)", i + 1, file);
+      else {
+        *q2 = 0;
+        snprintf(names[i], IND_NAME_LEN, "%s", q1 + 1);
+      }
+    }
+    if (why[0]) *n = 0;
+    break;
+  }
+  fclose(fp);
+}
+
+/* PETSc turns the tags into "Cell Sets"/"Face Sets" values, and we give them their names. A physical
+   group without elements still becomes a region, an empty one, so that its options are recognised and
+   using it is an error saying so (IndMeshCheckRegionNotEmpty). */
 static PetscErrorCode ReadGmshPhysicalNames(MPI_Comm comm, const char file[], IndMesh mesh)
 {
   PetscMPIInt rank;
   int         n = 0, dims[IND_MAX_REGIONS], tags[IND_MAX_REGIONS];
-  char        names[IND_MAX_REGIONS][IND_NAME_LEN];
+  char        names[IND_MAX_REGIONS][IND_NAME_LEN], why[PETSC_MAX_PATH_LEN + 128] = "";
 
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  if (rank == 0) {
-    FILE *fp = fopen(file, "r");
-    char  line[1024];
-    PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "Cannot open mesh file '%s' (-mesh_file)", file);
-    while (fgets(line, sizeof(line), fp)) {
-      if (strncmp(line, "$PhysicalNames", 14)) {
-        if (!strncmp(line, "$Nodes", 6) || !strncmp(line, "$Entities", 9)) break;
-        continue;
-      }
-      PetscCheck(fgets(line, sizeof(line), fp) && sscanf(line, "%d", &n) == 1, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "Malformed $PhysicalNames in '%s'", file);
-      PetscCheck(n <= IND_MAX_REGIONS, PETSC_COMM_SELF, PETSC_ERR_SUP, "'%s' has %d physical names; at most %d are supported", file, n, IND_MAX_REGIONS);
-      for (int i = 0; i < n; ++i) {
-        char *q1, *q2;
-        PetscCheck(fgets(line, sizeof(line), fp) && sscanf(line, "%d %d", &dims[i], &tags[i]) == 2, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "Malformed $PhysicalNames line %d in '%s'", i + 1, file);
-        q1 = strchr(line, '"');
-        q2 = q1 ? strchr(q1 + 1, '"') : NULL;
-        PetscCheck(q1 && q2 && q2 - q1 - 1 < IND_NAME_LEN, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "Malformed physical name on line %d of $PhysicalNames in '%s'", i + 1, file);
-        *q2 = 0;
-        PetscCall(PetscStrncpy(names[i], q1 + 1, IND_NAME_LEN));
-      }
-      break;
-    }
-    fclose(fp);
-  }
+  if (rank == 0) ParsePhysicalNames(file, &n, dims, tags, names, why, sizeof(why));
+  PetscCallMPI(MPI_Bcast(why, sizeof(why), MPI_CHAR, 0, comm));
+  PetscCheck(!why[0], comm, PETSC_ERR_FILE_UNEXPECTED, "%s", why);
   PetscCallMPI(MPI_Bcast(&n, 1, MPI_INT, 0, comm));
   PetscCallMPI(MPI_Bcast(dims, n, MPI_INT, 0, comm));
   PetscCallMPI(MPI_Bcast(tags, n, MPI_INT, 0, comm));
@@ -76,7 +105,8 @@ static PetscErrorCode ReadGmshPhysicalNames(MPI_Comm comm, const char file[], In
         PetscCall(PetscSNPrintf(fallback, sizeof(fallback), "%s%" PetscInt_FMT, d == 3 ? "volume" : "surface", gvals[i]));
         name = fallback;
       }
-      PetscCheck(mesh->nregions < IND_MAX_REGIONS, comm, PETSC_ERR_SUP, "Too many regions in '%s'", file);
+      PetscCheck(mesh->nregions < IND_MAX_REGIONS, comm, PETSC_ERR_SUP,
+        "Too many regions in mesh file '%s' (-mesh_file): at most %d are supported", file, IND_MAX_REGIONS);
       PetscCall(PetscStrncpy(mesh->regions[mesh->nregions].name, name, IND_NAME_LEN));
       mesh->regions[mesh->nregions++].dim = d;
       PetscCall(DMCreateLabel(mesh->dm, name));
@@ -87,6 +117,20 @@ static PetscErrorCode ReadGmshPhysicalNames(MPI_Comm comm, const char file[], In
         PetscCall(ISDestroy(&pts));
       }
     }
+  }
+  for (int k = 0; k < n; ++k) {
+    PetscBool known = PETSC_FALSE;
+    if (dims[k] != 2 && dims[k] != 3) continue;
+    for (PetscInt r = 0; r < mesh->nregions && !known; ++r) {
+      PetscCall(PetscStrcmp(mesh->regions[r].name, names[k], &known));
+      known = known && mesh->regions[r].dim == dims[k] ? PETSC_TRUE : PETSC_FALSE;
+    }
+    if (known) continue;
+    PetscCheck(mesh->nregions < IND_MAX_REGIONS, comm, PETSC_ERR_SUP,
+      "Too many regions in mesh file '%s' (-mesh_file): at most %d are supported", file, IND_MAX_REGIONS);
+    PetscCall(PetscStrncpy(mesh->regions[mesh->nregions].name, names[k], IND_NAME_LEN));
+    mesh->regions[mesh->nregions++].dim = dims[k];
+    PetscCall(DMCreateLabel(mesh->dm, names[k]));
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -111,18 +155,26 @@ static PetscErrorCode AddRegion(IndMesh mesh, const char name[], PetscInt dim, c
 static PetscErrorCode CreateBoxMesh(MPI_Comm comm, IndMesh mesh)
 {
   PetscInt  faces[3] = {2, 2, 2}, n = 3, cStart, cEnd;
+  PetscBool set;
   PetscReal lower[3] = {0, 0, 0}, upper[3] = {1, 1, 1};
   DMLabel   cells;
   /* PETSc's hexahedral box marks its faces in "Face Sets" with these values. */
   const char *names[6] = {"bottom", "top", "front", "back", "right", "left"};
 
   PetscFunctionBeginUser;
-  PetscOptionsBegin(comm, NULL, "Built-in box mesh (used when -mesh_file is not given)", "Mesh");
-  PetscCall(PetscOptionsIntArray("-dm_plex_box_faces", "Number of hexahedra along x,y,z", "", faces, &n, NULL));
+  PetscOptionsBegin(comm, NULL, IND_TITLE "Built-in box mesh (without -mesh_file)", "Mesh");
+  PetscCall(IndOptionsIntArray("-dm_plex_box_faces", "Number of hexahedra along x, y, z", "nx,ny,nz", NULL, faces, &n,
+    &set));
+  PetscCheck(!set || n == 3, comm, PETSC_ERR_ARG_SIZ,
+    "-dm_plex_box_faces needs three counts nx,ny,nz, got %" PetscInt_FMT, n);
   n = 3;
-  PetscCall(PetscOptionsRealArray("-dm_plex_box_lower", "Lower corner x,y,z (nm)", "", lower, &n, NULL));
+  PetscCall(IndOptionsRealArray("-dm_plex_box_lower", "Lower corner", "x,y,z in nm", NULL, lower, &n, &set));
+  PetscCheck(!set || n == 3, comm, PETSC_ERR_ARG_SIZ,
+    "-dm_plex_box_lower needs three coordinates x,y,z (nm), got %" PetscInt_FMT, n);
   n = 3;
-  PetscCall(PetscOptionsRealArray("-dm_plex_box_upper", "Upper corner x,y,z (nm)", "", upper, &n, NULL));
+  PetscCall(IndOptionsRealArray("-dm_plex_box_upper", "Upper corner", "x,y,z in nm", NULL, upper, &n, &set));
+  PetscCheck(!set || n == 3, comm, PETSC_ERR_ARG_SIZ,
+    "-dm_plex_box_upper needs three coordinates x,y,z (nm), got %" PetscInt_FMT, n);
   PetscOptionsEnd();
   for (int d = 0; d < 3; ++d) {
     PetscCheck(faces[d] > 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-dm_plex_box_faces needs three positive counts");
@@ -139,7 +191,7 @@ static PetscErrorCode CreateBoxMesh(MPI_Comm comm, IndMesh mesh)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Decided on the serial mesh: after distribution a rank may hold no cell (PLATFORM.md). */
+/* Decided on the serial mesh: after distribution a rank may hold no cell. */
 static PetscErrorCode CheckCellTypes(MPI_Comm comm, IndMesh mesh)
 {
   PetscInt dim, cStart, cEnd, flags[2] = {0, 0}; /* tets, hexes */
@@ -226,23 +278,117 @@ static PetscErrorCode PerturbInteriorVertices(IndMesh mesh, PetscReal frac)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* On rank 0, before PETSc reads it there (a reader that fails on rank 0 leaves the others waiting): a
+   gmsh file starts with $MeshFormat and, unless cut short, ends with an $End... line. */
+static PetscErrorCode CheckMeshFile(MPI_Comm comm, const char file[])
+{
+  PetscMPIInt rank;
+  char        why[256] = "";
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  if (!rank) {
+    FILE *fp = fopen(file, "rb");
+    char  head[16] = "", tail[512];
+    long  size = 0;
+    if (!fp) snprintf(why, sizeof(why), "cannot be opened");
+    else if (fseek(fp, 0, SEEK_END) || (size = ftell(fp)) <= 0) snprintf(why, sizeof(why), "is empty");
+    else {
+      size_t n, got;
+      rewind(fp);
+      got = fread(head, 1, 11, fp);
+      head[got] = 0;
+      if (strncmp(head, "$MeshFormat", 11)) snprintf(why, sizeof(why),
+        "is not a gmsh mesh (it does not start with $MeshFormat)");
+      n = (size_t)PetscMin(size, (long)sizeof(tail) - 1);
+      if (!why[0] && (fseek(fp, size - (long)n, SEEK_SET) || fread(tail, 1, n, fp) != n)) snprintf(why, sizeof(why),
+        "cannot be read");
+      if (!why[0]) {
+        char *last;
+        tail[n] = 0;
+        while (n && (tail[n - 1] == '\n' || tail[n - 1] == '\r' || tail[n - 1] == ' ' || tail[n - 1] == 0))
+          tail[--n] = 0;
+        last = strrchr(tail, '\n');
+        last = last ? last + 1 : tail;
+        if (strncmp(last, "$End", 4)) snprintf(why, sizeof(why),
+          "is truncated or corrupt: it does not end with an $End... line");
+      }
+    }
+    if (fp) fclose(fp);
+  }
+  PetscCallMPI(MPI_Bcast(why, sizeof(why), MPI_CHAR, 0, comm));
+  PetscCheck(!why[0], comm, PETSC_ERR_FILE_UNEXPECTED, "Mesh file '%s' (-mesh_file) %s", file, why);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* PETSc's reader, whose messages ("Insufficient data, read only 7105 < 30705 items") do not name the
+   file. It fails on rank 0, where it reads. */
+static PetscErrorCode ReadMeshFile(MPI_Comm comm, const char file[], DM *dm)
+{
+  PetscErrorCode ierr;
+  char          *specific = NULL;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
+  ierr = DMPlexCreateFromFile(comm, file, "indent", PETSC_TRUE, dm);
+  PetscCall(PetscPopErrorHandler());
+  if (ierr) PetscCall(PetscErrorMessage(ierr, NULL, &specific));
+  PetscCheck(!ierr, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "Cannot read mesh file '%s' (-mesh_file): %s", file,
+    specific && specific[0] ? specific : "PETSc's gmsh reader failed");
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* -help with a .geo: not meshed (a listing must not run gmsh), but the options of its regions must be
+   listed. A box of one hexahedron per physical volume stands in for it, every physical surface being
+   its (flat) top, so that the set-up reads every option it would read on the real mesh. */
+static PetscErrorCode CreateListingMesh(MPI_Comm comm, const char geo[], const IndGeoInfo *info, IndMesh mesh)
+{
+  PetscInt  faces[3] = {PetscMax(1, info->nvolumes), 1, 1}, cStart, cEnd;
+  PetscReal lower[3] = {0, 0, 0}, upper[3] = {(PetscReal)faces[0], 1, 1};
+  DMLabel   cells;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMPlexCreateBoxMesh(comm, 3, PETSC_FALSE, faces, lower, upper, NULL, PETSC_TRUE, &mesh->dm));
+  PetscCall(DMCreateLabel(mesh->dm, "Cell Sets"));
+  PetscCall(DMGetLabel(mesh->dm, "Cell Sets", &cells));
+  PetscCall(DMPlexGetHeightStratum(mesh->dm, 0, &cStart, &cEnd));
+  if (info->nvolumes)
+    for (PetscInt c = cStart; c < cEnd; ++c) PetscCall(DMLabelSetValue(cells, c, 1 + (c - cStart) % info->nvolumes));
+  for (PetscInt k = 0; k < info->nvolumes; ++k) PetscCall(AddRegion(mesh, info->volumes[k], 3, "Cell Sets", k + 1));
+  for (PetscInt k = 0; k < info->nsurfaces; ++k) PetscCall(AddRegion(mesh, info->surfaces[k], 2, "Face Sets", 2));
+  PetscCall(PetscSNPrintf(mesh->source, sizeof(mesh->source), "%s (not meshed: -help)", geo));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode IndMeshCreate(MPI_Comm comm, IndMesh *out)
 {
   IndMesh   mesh;
   char      file[PETSC_MAX_PATH_LEN] = "", gmsh[PETSC_MAX_PATH_LEN] = "gmsh", *params[64];
+  char      dir[PETSC_MAX_PATH_LEN] = "output";
   PetscInt  nparams = 64;
-  PetscBool has_file, is_geo = PETSC_FALSE;
+  PetscBool has_file, has_params, is_geo = PETSC_FALSE, listing = IndHelpListing(), listed = PETSC_FALSE;
   PetscInt  refine = 0;
   PetscReal perturb = 0;
 
   PetscFunctionBeginUser;
+  /* Before anything is read or made: a run that cannot write its results should not start. */
+  PetscCall(PetscOptionsGetString(NULL, NULL, "-output_dir", dir, sizeof(dir), NULL));
+  PetscCall(IndCheckDirectory(comm, dir, "-output_dir"));
   PetscCall(PetscCalloc1(1, &mesh));
-  PetscOptionsBegin(comm, NULL, "Mesh options", "Mesh");
-  PetscCall(PetscOptionsString("-mesh_file", "gmsh mesh (.msh, format 2.2 or 4.1), or geometry (.geo, meshed by gmsh into <output_dir>/mesh.msh); the built-in box mesh is used without it", "", file, file, sizeof(file), &has_file));
-  PetscCall(PetscOptionsString("-mesh_gmsh", "gmsh executable for a .geo -mesh_file", "", gmsh, gmsh, sizeof(gmsh), NULL));
-  PetscCall(PetscOptionsStringArray("-mesh_geo_parameters", "name=value,... passed to gmsh as -setnumber name value for a .geo -mesh_file", "", params, &nparams, NULL));
-  PetscCall(PetscOptionsInt("-mesh_refine", "Uniform refinements after distribution", "", refine, &refine, NULL));
-  PetscCall(PetscOptionsReal("-mesh_perturb", "Random displacement of interior vertices of the mesh as read, as a fraction of its shortest edge (tests)", "", perturb, &perturb, NULL));
+  PetscOptionsBegin(comm, NULL, IND_TITLE "Mesh (-mesh_*)", "Mesh");
+  PetscCall(IndOptionsString("-mesh_file",
+    "gmsh mesh (.msh, format 2.2 or 4.1), or geometry (.geo, meshed by gmsh into <output_dir>/mesh.msh)", "file",
+    "the built-in box", file, file, sizeof(file), &has_file));
+  PetscCall(IndOptionsString("-mesh_gmsh", "gmsh executable for a .geo -mesh_file", "file", NULL, gmsh, gmsh,
+    sizeof(gmsh), NULL));
+  PetscCall(IndOptionsStringArray("-mesh_geo_parameters",
+    "Parameters of a .geo -mesh_file, passed to gmsh as -setnumber name value", "name=value,...", params, &nparams,
+    &has_params));
+  if (!has_params) nparams = 0;
+  PetscCall(IndOptionsInt("-mesh_refine", "Uniform refinements after distribution", NULL, refine, &refine, NULL));
+  PetscCall(IndOptionsReal("-mesh_perturb",
+    "Random displacement of interior vertices of the mesh as read, as a fraction of its shortest edge (tests)", "",
+    NULL, perturb, &perturb, NULL));
   PetscOptionsEnd();
   PetscCheck(refine >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-mesh_refine must be >= 0, got %" PetscInt_FMT, refine);
   PetscCheck(perturb >= 0 && perturb < 0.5, comm, PETSC_ERR_ARG_OUTOFRANGE, "-mesh_perturb must lie in [0, 0.5), got %g", (double)perturb);
@@ -256,22 +402,30 @@ PetscErrorCode IndMeshCreate(MPI_Comm comm, IndMesh *out)
     PetscCall(PetscStrlen(file, &len));
     if (len > 4) PetscCall(PetscStrcmp(file + len - 4, ".geo", &is_geo));
     if (is_geo) {
-      /* The mesh lands in the run's directory, so a run keeps the mesh it was computed on. */
-      char dir[PETSC_MAX_PATH_LEN] = "output", msh[PETSC_MAX_PATH_LEN];
-      PetscCall(PetscOptionsGetString(NULL, NULL, "-output_dir", dir, sizeof(dir), NULL));
-      PetscCall(IndMakeDirectory(comm, dir, "-output_dir"));
-      PetscCall(PetscSNPrintf(msh, sizeof(msh), "%s/mesh.msh", dir));
-      PetscCall(IndGmshMesh(comm, gmsh, file, params, nparams, msh));
-      PetscCall(PetscStrncpy(file, msh, sizeof(file)));
+      IndGeoInfo info;
+      PetscCall(IndGeoRead(comm, file, &info));
+      PetscCall(IndGeoCheckParameters(comm, file, &info, params, nparams));
+      if (listing) {
+        PetscCall(CreateListingMesh(comm, file, &info, mesh));
+        listed = PETSC_TRUE;
+      } else {
+        /* The mesh lands in the run's directory, so a run keeps the mesh it was computed on. */
+        char msh[PETSC_MAX_PATH_LEN];
+        PetscCall(IndMakeDirectory(comm, dir, "-output_dir"));
+        PetscCall(PetscSNPrintf(msh, sizeof(msh), "%s/mesh.msh", dir));
+        PetscCall(IndGmshMesh(comm, gmsh, file, params, nparams, msh));
+        PetscCall(PetscStrncpy(file, msh, sizeof(file)));
+      }
     }
   }
   PetscCheck(!nparams || is_geo, comm, PETSC_ERR_ARG_WRONG, "-mesh_geo_parameters needs a .geo -mesh_file");
   for (PetscInt i = 0; i < nparams; ++i) PetscCall(PetscFree(params[i]));
-  if (has_file) {
-    PetscCall(DMPlexCreateFromFile(comm, file, "indent", PETSC_TRUE, &mesh->dm));
+  if (has_file && !listed) {
+    PetscCall(CheckMeshFile(comm, file));
+    PetscCall(ReadMeshFile(comm, file, &mesh->dm));
     PetscCall(PetscStrncpy(mesh->source, file, sizeof(mesh->source)));
     PetscCall(ReadGmshPhysicalNames(comm, file, mesh));
-  } else PetscCall(CreateBoxMesh(comm, mesh));
+  } else if (!has_file) PetscCall(CreateBoxMesh(comm, mesh));
   PetscCall(PetscObjectSetName((PetscObject)mesh->dm, "mesh"));
   PetscCall(CheckCellTypes(comm, mesh));
   /* On the serial mesh, where every boundary face is plainly one, so any rank count gets the same mesh. */
@@ -329,4 +483,38 @@ PetscErrorCode IndMeshGetRegionLabel(IndMesh mesh, const char name[], PetscInt d
   }
   SETERRQ(PetscObjectComm((PetscObject)mesh->dm), PETSC_ERR_ARG_WRONG, "Mesh '%s' has no %s named '%s' (required by %s); its %ss are:%s", mesh->source, dim == 3 ? "volume" : "surface",
           name, option, dim == 3 ? "volume" : "surface", list[0] ? list : " (none)");
+}
+
+PetscErrorCode IndMeshCheckRegionNotEmpty(IndMesh mesh, const char name[], PetscInt dim, const char option[])
+{
+  MPI_Comm comm = PetscObjectComm((PetscObject)mesh->dm);
+  DMLabel  label;
+  PetscInt n = 0, pStart, pEnd;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMGetLabel(mesh->dm, name, &label));
+  PetscCall(DMPlexGetHeightStratum(mesh->dm, dim == 3 ? 0 : 1, &pStart, &pEnd));
+  if (label) {
+    IS pts = NULL;
+    PetscCall(DMLabelGetStratumIS(label, 1, &pts));
+    if (pts) {
+      const PetscInt *p;
+      PetscInt        np;
+      PetscCall(ISGetLocalSize(pts, &np));
+      PetscCall(ISGetIndices(pts, &p));
+      for (PetscInt k = 0; k < np; ++k) n += p[k] >= pStart && p[k] < pEnd;
+      PetscCall(ISRestoreIndices(pts, &p));
+      PetscCall(ISDestroy(&pts));
+    }
+  }
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &n, 1, MPIU_INT, MPI_SUM, comm));
+  if (dim == 3)
+    PetscCheck(n, comm, PETSC_ERR_USER_INPUT,
+      "Volume region '%s' of mesh '%s' is empty: its physical volume has no cells, so its options (-%s_young, ...) "
+      "cannot apply; fix the physical volume in the mesh",
+               name, mesh->source, name);
+  else PetscCheck(n, comm, PETSC_ERR_USER_INPUT,
+    "Surface '%s' of mesh '%s' (required by %s) is empty: its physical surface has no faces", name, mesh->source,
+    option);
+  PetscFunctionReturn(PETSC_SUCCESS);
 }

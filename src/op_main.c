@@ -12,6 +12,7 @@ static const char help[] = "indent-op: Oliver-Pharr analysis of a load-displacem
 #include <string.h>
 #include "ind_summary.h"
 #include "ind_indenter.h"
+#include "ind_common.h"
 
 static PetscReal Area(PetscReal hc, void *ctx)
 {
@@ -63,7 +64,7 @@ static PetscErrorCode ReadCurve(const char path[], PetscInt *n, PetscReal **h, P
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-int main(int argc, char **argv)
+static PetscErrorCode Analyse(void)
 {
   char        path[PETSC_MAX_PATH_LEN] = "";
   IndOPParams p;
@@ -74,15 +75,20 @@ int main(int argc, char **argv)
   PetscBool   has_file, has_type;
   int         code;
 
-  PetscCall(PetscInitialize(&argc, &argv, NULL, help));
+  PetscFunctionBeginUser;
   PetscCall(IndOPParamsSetFromOptions(PETSC_COMM_WORLD, &p));
   PetscCall(PetscMemzero(&ind, sizeof(ind)));
-  PetscOptionsBegin(PETSC_COMM_WORLD, NULL, "Oliver-Pharr analysis", "OP");
-  PetscCall(PetscOptionsString("-op_file", "Load-displacement CSV", "", path, path, sizeof(path), &has_file));
-  PetscCall(PetscOptionsEnum("-indenter_type", "Indenter shape (area function)", "", IndIndenterTypes, (PetscEnum)ind.type, (PetscEnum *)&ind.type, &has_type));
-  PetscCall(PetscOptionsReal("-indenter_radius", "Sphere, tip or punch radius (nm)", "", ind.radius, &ind.radius, NULL));
-  PetscCall(PetscOptionsReal("-indenter_angle", "Cone or face angle (degrees; 0 standard)", "", angle, &angle, NULL));
+  PetscOptionsBegin(PETSC_COMM_WORLD, NULL, IND_TITLE "Curve and indenter", "OP");
+  PetscCall(IndOptionsString("-op_file", "Load-displacement CSV (columns depth_nm, load_uN)", "file", IND_REQUIRED,
+    path, path, sizeof(path), &has_file));
+  PetscCall(IndOptionsEnum("-indenter_type", "Indenter shape, for the area function", IndIndenterTypes,
+    (PetscEnum)ind.type, (PetscEnum *)&ind.type, &has_type));
+  PetscCall(IndOptionsReal("-indenter_radius", "Sphere, tip or punch radius", "nm", NULL, ind.radius, &ind.radius,
+    NULL));
+  PetscCall(IndOptionsReal("-indenter_angle", "Cone half-angle or pyramid face angle (0: the standard one)", "degrees",
+    NULL, angle, &angle, NULL));
   PetscOptionsEnd();
+  if (IndHelpListing()) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCheck(has_file, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-op_file is required (a CSV with depth_nm and load_uN)");
   PetscCheck(has_type, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-indenter_type is required for the area function");
   ind.angle = angle * PETSC_PI / 180;
@@ -105,6 +111,19 @@ int main(int argc, char **argv)
     PetscCall(PetscPrintf(PETSC_COMM_WORLD, "  true contact area at P_max %.6g nm^2 (A_true / A(h_c) = %.4f): H %.6g GPa, E_r %.6g GPa, E %.6g GPa\n", (double)A[imax], (double)(A[imax] / r.A), (double)H, (double)Er, (double)E));
   }
   PetscCall(PetscFree3(h, P, A));
-  PetscCall(PetscFinalize());
-  return 0;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+int main(int argc, char **argv)
+{
+  PetscErrorCode ierr;
+
+  IndHelpCaptureBegin();
+  ierr = PetscInitialize(&argc, &argv, NULL, NULL);
+  if (ierr) return (int)ierr;
+  ierr = IndErrorSetUp("indent-op");
+  if (!ierr) ierr = IndHelpCaptureEnd();
+  if (!ierr) ierr = Analyse();
+  if (IndHelpListing()) (void)IndHelpPrint(help);
+  return IndErrorFinish(ierr);
 }

@@ -57,8 +57,8 @@ PetscErrorCode IndMeshSetPartitioner(DM dm)
   PetscInt         choice  = 0;
 
   PetscFunctionBeginUser;
-  PetscOptionsBegin(comm, NULL, "Partitioning", "Mesh");
-  PetscCall(PetscOptionsEList("-mesh_partitioner", "Mesh partitioner", "", types, 3, types[choice], &choice, NULL));
+  PetscOptionsBegin(comm, NULL, IND_TITLE "Mesh partitioning", "Mesh");
+  PetscCall(IndOptionsEList("-mesh_partitioner", "Partitioner of the serial mesh", types, 3, choice, &choice, NULL));
   PetscOptionsEnd();
   PetscCall(DMPlexGetPartitioner(dm, &part));
   switch (choice) {
