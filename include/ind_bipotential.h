@@ -1,5 +1,5 @@
 #pragma once
-/* The bi-potential local solve of one contact node (THEORY.md section 2), in the node's local frame:
+/* The bi-potential local solve of one contact node (doc/theory.md section 2), in the node's local frame:
    component 0 along the indenter's normal n (compression positive), 1 and 2 along the tangents.
    Pure: no PETSc objects. */
 #include <petscsys.h>

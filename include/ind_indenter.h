@@ -1,5 +1,5 @@
 #pragma once
-/* Rigid analytic indenters (THEORY.md section 2). Pure: no PETSc objects, no globals.
+/* Rigid analytic indenters (doc/theory.md section 2). Pure: no PETSc objects, no globals.
 
    The axis is vertical through (axis[0], axis[1]); the indenter comes down from above onto a body
    whose undeformed top surface is the plane z = surface. `depth` is how far its lowest point has

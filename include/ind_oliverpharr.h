@@ -1,5 +1,5 @@
 #pragma once
-/* Oliver-Pharr analysis of a load-displacement curve (J. Mater. Res. 7 (1992) 1564; THEORY.md
+/* Oliver-Pharr analysis of a load-displacement curve (J. Mater. Res. 7 (1992) 1564; doc/theory.md
    section 3). Pure: no PETSc objects. Units: depth nm, load uN; H and moduli come out in GPa
    (1 uN/nm^2 = 1000 GPa). */
 #include <petscsys.h>

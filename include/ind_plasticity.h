@@ -1,5 +1,5 @@
 #pragma once
-/* Small-strain von Mises plasticity at one quadrature point (THEORY.md section 1): Voce or linear
+/* Small-strain von Mises plasticity at one quadrature point (doc/theory.md section 1): Voce or linear
    isotropic hardening, linear Prager kinematic hardening, radial return and consistent tangent.
    Pure: depends only on petscsys.h, holds no PETSc objects and no globals, so every quadrature point
    can call it independently and it can be unit tested alone.

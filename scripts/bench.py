@@ -57,7 +57,7 @@ CASES = {
     "elastic_64": (elastic(64), 2, False, "elastic Q1 box, one solve"),
     "sphere_100k": (sphere(31), 1, True, "frictionless sphere into a plastic Q1 box, one load step"),
     "sphere_800k": (sphere(63), 2, False, "frictionless sphere into a plastic Q1 box, one load step"),
-    "paper_h15": (paper(15), 2, True, "paper case, load and unload (README mesh)"),
+    "paper_h15": (paper(15), 2, True, "paper case, load and unload (h_tip 15)"),
     "paper_h10": (paper(10), 2, True, "paper case, load and unload"),
     "paper_h6": (paper(6), 2, False, "paper case, load and unload"),
     "paper_h4": (paper(4), 2, False, "paper case, load and unload"),
@@ -105,7 +105,7 @@ def run_case(name, opts, np, build, workdir, extra):
     # each rank's peak resident memory (kB), from the kernel's accounting of the finished process
     rss = 'exec /usr/bin/time -f %M -o "$0/rss_rank$OMPI_COMM_WORLD_RANK.txt" "$@"'
     cmd = ["mpiexec", "-n", str(np), "sh", "-c", rss, out,
-           os.path.join(build, "indent")] + opts + extra + ["-output_dir", out, "-log_view", ":" + logv + ":ascii_flamegraph"]
+           os.path.join(build, "indent")] + opts + extra + ["-output_dir", out, "-output_overwrite", "-log_view", ":" + logv + ":ascii_flamegraph"]
     t0 = time.time()
     proc = subprocess.run(cmd, cwd=TOP, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
     wall = time.time() - t0

@@ -1,6 +1,6 @@
 #include "contact_node.h"
 
-/* Semi-smooth Newton for the contact (THEORY.md section 2): the reaction of a contact node is not a
+/* Semi-smooth Newton for the contact (doc/theory.md section 2): the reaction of a contact node is not a
    separate unknown but the force the body needs there, lambda = r_i(u), the node's rows of the
    residual without contact; its three equilibrium rows are replaced by the bi-potential fixed
    point written as a complementarity function,

@@ -1,6 +1,6 @@
 #include "ind_matinsert.h"
 
-/* MatSetValues searches every one of a cell's nd x nd columns in its row: on the README's paper case
+/* MatSetValues searches every one of a cell's nd x nd columns in its row: on the paper case at h_tip 15
    that was 85% of the Jacobian, 2 us per P1 cell. The pattern never changes, so the search is done
    once: per cell and pair of nodes (a, b), where the 3 x 3 block starts within the rows of node a, in
    the diagonal or the off-diagonal part of the rank's AIJ matrix. The three rows of a node share

@@ -1,4 +1,4 @@
-/* Unit test of the constitutive kernel (src/plasticity.c) against the closed forms of THEORY.md
+/* Unit test of the constitutive kernel (src/plasticity.c) against the closed forms of doc/theory.md
    section 1. Every expected value is computed here from a closed form; no numbers are pasted.
    Exits non-zero, with the failing check named, on the first failure. */
 #include <math.h>
@@ -11,7 +11,7 @@
     PetscCheck((worst) <= (tol), PETSC_COMM_SELF, PETSC_ERR_PLIB, "%s: worst error %g exceeds %g", name, (double)(worst), (double)(tol)); \
   } while (0)
 
-/* E = 70 GPa, nu = 0.3 throughout, as in theory_check.py. */
+/* E = 70 GPa, nu = 0.3 throughout. */
 static const PetscReal YOUNG = 70.0, POISSON = 0.3;
 
 static IndPlasticParams Law(IndHardening law, PetscReal R0, PetscReal Rs, PetscReal gamma, PetscReal h, PetscReal H)
@@ -84,7 +84,7 @@ static PetscErrorCode Update(const IndPlasticParams *m, const PetscReal eps[6], 
 }
 
 /* Strain-driven uniaxial stress: Newton on the lateral strain with the consistent tangent until
-   sigma_yy = sigma_zz = 0 (they stay equal by symmetry), as theory_check.py's check_uniaxial. */
+   sigma_yy = sigma_zz = 0 (they stay equal by symmetry). */
 static PetscErrorCode UniaxialStep(const IndPlasticParams *m, PetscReal exx, PetscReal *lat, const IndPlasticState *old, IndPlasticState *st, PetscReal sigma[6], PetscReal *dp)
 {
   PetscReal D[36];
