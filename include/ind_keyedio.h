@@ -1,0 +1,18 @@
+#pragma once
+/* HDF5 rows of mesh values and their keys, for the checkpoint and for continuing a field file: the
+   helpers that write a local block of rows as one dataset, read a dataset back laid out by PETSc, and
+   find where each of this rank's keys sits in a file written on any number of ranks. */
+#include <petscdmplex.h>
+#include <petscviewerhdf5.h>
+#include "ind_keyjoin.h"
+
+/* The centroid of point p's vertices in the undeformed mesh (its key). */
+PetscErrorCode IndPointCentroid(DM dm, PetscInt p, PetscReal c[3]);
+/* Collective: n local rows of bs reals as dataset name of the viewer's current group. */
+PetscErrorCode IndRowsWrite(PetscViewer viewer, const char name[], PetscInt n, PetscInt bs, const PetscReal *rows);
+/* Collective: dataset name of the current group into a new vector of block size bs, laid out by PETSc. */
+PetscErrorCode IndRowsRead(PetscViewer viewer, const char name[], PetscInt bs, Vec *x);
+/* Collective: the row of the file's key dataset (current group) holding each of the n keys; an error
+   (naming what and file) when a key is missing or the counts differ. index is allocated (PetscFree). */
+PetscErrorCode IndRowsLocate(PetscViewer viewer, const char keys[], const char what[], const char file[], PetscInt n,
+                             const PetscReal *mine, PetscInt **index);
