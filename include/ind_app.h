@@ -11,6 +11,8 @@
 #include "ind_loadpath.h"
 #include "ind_contact.h"
 #include "ind_summary.h"
+#include "ind_rundir.h"
+#include "ind_warnings.h"
 
 /* How each step's Newton iteration starts: from the last increment extrapolated when there is one
    (else the tangent response), always from the tangent response, or from the prescribed values alone. */
@@ -56,6 +58,16 @@ struct _p_IndApp {
   PetscBool    quiet;
   IndStepMonitor monitor;
   void          *monitor_ctx;
+  IndRunDir      rundir;
+  PetscInt       checkpoint_every; /* accepted steps between checkpoints (0: only on a signal) */
+  PetscInt       stop_after;       /* -checkpoint_stop_after_step: act as if SIGTERM came after it (tests) */
+  PetscInt       checkpointed;     /* the accepted step of the last checkpoint written (-1: none) */
+  int            stopped;          /* the signal that stopped the run after its checkpoint (0: none) */
+  char           start_time[64];   /* when the run (its first part, for a restarted one) started */
+  PetscLogDouble elapsed_before;   /* wall seconds of the earlier parts of a restarted run */
+  PetscLogDouble elapsed_now;      /* wall seconds of this part, at the last checkpoint or the end */
+  PetscLogDouble t_start;
+  IndWarnings    warnings; /* of the run so far, for the summary */
 };
 
 PetscErrorCode IndAppCreate(MPI_Comm comm, IndApp *app);
@@ -68,5 +80,12 @@ PetscErrorCode IndAppSetStepMonitor(IndApp app, IndStepMonitor fn, void *ctx);
 /* One attempt from the current state to pseudo-time t of the load program: on convergence the trial
    history and the contact state are committed; otherwise U is restored and nothing changes. */
 PetscErrorCode IndAppSolveStep(IndApp app, PetscReal t, IndStepResult *step);
-/* Applies the load from 0 to 1 in adaptive steps (-load_steps and friends), writing output after each. */
+/* Applies the load from 0 to 1 in adaptive steps (-load_steps and friends), writing output after each,
+   and a checkpoint every -checkpoint_every steps; a SIGTERM, SIGINT or SIGUSR1 ends it after the step
+   under way with a checkpoint (see IndAppStoppedBy). */
 PetscErrorCode IndAppRun(IndApp app);
+/* The signal that stopped IndAppRun after writing a checkpoint, 0 when the run finished. */
+int            IndAppStoppedBy(IndApp app);
+/* The exit status of a run stopped by a signal with its checkpoint written (EX_TEMPFAIL): a job script
+   resubmits on it. */
+#define IND_EXIT_CHECKPOINTED 75

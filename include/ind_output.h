@@ -43,6 +43,8 @@ struct _p_IndOutput {
   PetscReal  *times;    /* per output step: XDMF time value, the pseudo-time t given to IndOutputSetStepInfo */
   PetscReal  *info;     /* per output step: IND_OUTPUT_INFO values, NaN where not known */
   PetscBool   info_set; /* IndOutputSetStepInfo was called for the coming step */
+  PetscBool   resume;               /* continue indent.h5 (a restarted run) rather than create it */
+  struct _n_IndOutputPerm *perm;   /* resumed: where this run's vertices and cells sit in the file */
   PetscInt    nvert, ncell, corners; /* global counts */
 };
 
@@ -50,6 +52,10 @@ PetscErrorCode IndOutputCreate(IndMesh mesh, IndDisc disc, IndOutput *out);
 /* Adds the vertex fields contact_pressure (GPa) and contact_status (0 open, 1 stick, 2 slip). */
 PetscErrorCode IndOutputSetContact(IndOutput out, IndContact contact);
 PetscErrorCode IndOutputDestroy(IndOutput *out);
+/* A restarted run continues the earlier part's files: the curve is rewritten with the checkpoint's npts
+   points (the lines of steps after the checkpoint go), and indent.h5 is extended from the checkpoint's
+   output step, in the file's vertex and cell order whatever the rank count (output_resume.c). */
+PetscErrorCode IndOutputResume(IndOutput out, PetscInt npts, const IndCurvePoint *pts);
 /* Appends a line to the curve (rank 0 writes; flushed at once, so a killed run keeps its curve). */
 PetscErrorCode IndOutputCurvePoint(IndOutput out, const IndCurvePoint *point);
 /* Records what the XDMF index says of the coming output step: the accepted step number, the load program's

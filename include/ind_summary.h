@@ -6,6 +6,8 @@
 #include "ind_oliverpharr.h"
 #include "ind_indenter.h"
 #include "ind_output.h"
+#include "ind_contact.h"
+#include "ind_warnings.h"
 
 typedef struct _p_IndSummary *IndSummary;
 struct _p_IndSummary {
@@ -13,7 +15,6 @@ struct _p_IndSummary {
   IndOPParams    op;
   IndCurvePoint *pts; /* accepted steps */
   PetscInt       n, cap;
-  PetscLogDouble start; /* wall clock at creation */
 };
 
 /* Reads the -op_* options of the analysis (shared with indent-op), checking each. */
@@ -21,5 +22,18 @@ PetscErrorCode IndOPParamsSetFromOptions(MPI_Comm comm, IndOPParams *params);
 PetscErrorCode IndSummaryCreate(MPI_Comm comm, IndSummary *summary);
 PetscErrorCode IndSummaryDestroy(IndSummary *summary);
 PetscErrorCode IndSummaryAddPoint(IndSummary summary, const IndCurvePoint *point);
-/* Prints the summary (when print is true); rank 0 writes the two files into dir when write is true. */
-PetscErrorCode IndSummaryFinish(IndSummary summary, const IndIndenter *indenter, const char dir[], PetscBool write, PetscBool print);
+/* Where and how the run was made, for the summary's provenance. */
+typedef struct {
+  const char    *start_time; /* UTC, ISO 8601, of the run's first part */
+  PetscLogDouble wall;       /* seconds, over all parts of a restarted run */
+  PetscBool      restarted;  /* this part continued from a checkpoint */
+  IndContact     contact;    /* for the check of the Oliver-Pharr area against the surface */
+  IndWarnings   *warnings;   /* the run's; the summary's own are added */
+} IndRunInfo;
+
+/* Prints the summary (when print is true); rank 0 writes the two files into dir when write is true,
+   each under a temporary name renamed into place. summary.json also records the options, versions,
+   rank count, start and wall time, and the warnings of the run. */
+PetscErrorCode IndSummaryFinish(IndSummary summary, const IndIndenter *indenter, const IndRunInfo *info,
+  const char dir[],
+                                PetscBool write, PetscBool print);

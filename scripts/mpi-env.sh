@@ -1,3 +1,4 @@
-# Sourced by the run scripts: lets Open MPI run as root and oversubscribe small machines.
+# Sourced by the run scripts: lets Open MPI run as root and oversubscribe small machines; a rank that
+# exits with an error has said why in one line, so mpiexec's own banner about it is turned off.
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
-export HWLOC_HIDE_ERRORS=2 OPENBLAS_NUM_THREADS=1 OMP_NUM_THREADS=1
+export HWLOC_HIDE_ERRORS=2 OPENBLAS_NUM_THREADS=1 OMP_NUM_THREADS=1 OMPI_MCA_orte_execute_quiet=1

@@ -23,7 +23,7 @@ def run(args, mesh, degree, indenter, gap, out):
     cmd = ["mpiexec", "-n", str(args.np), os.path.join(args.build, "indent"), "-mesh_file", mesh, "-disc_degree", str(degree),
            "-domain_young", str(E), "-domain_poisson", str(NU), "-bc_symmetry", "left,front", "-bc_fixed", "bottom",
            "-load_depth", "100", "-load_steps", "5", "-load_unload", "0", "-contact_gap", gap, "-quiet", "-output_fields", "0",
-           "-ksp_type", "preonly", "-pc_type", "lu", "-pc_factor_mat_solver_type", "mumps", "-output_dir", out] + indenter
+           "-ksp_type", "preonly", "-pc_type", "lu", "-pc_factor_mat_solver_type", "mumps", "-output_dir", out, "-output_overwrite"] + indenter
     env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1", OMPI_MCA_rmaps_base_oversubscribe="1")
     subprocess.run(cmd, check=True, env=env, stdout=subprocess.DEVNULL)
     worst = 0.0

@@ -1,4 +1,13 @@
+#define _POSIX_C_SOURCE 200809L /* sigaction, gmtime_r, strtok_r */
+#include <signal.h>
+#include <stdio.h>
+#include <time.h>
+#include <sys/stat.h>
 #include "ind_app.h"
+#include "ind_checkpoint.h"
+#include "ind_signals.h"
+#include "ind_runchecks.h"
+#include "ind_options.h"
 
 const char *const IndPredictorTypes[] = {"extrapolate", "tangent", "none", "IndPredictor", "IND_PREDICTOR_", NULL};
 
@@ -12,10 +21,39 @@ PetscErrorCode IndAppCreate(MPI_Comm comm, IndApp *out)
   PetscCall(PetscCalloc1(1, &app));
   app->comm      = comm;
   app->predictor = IND_PREDICTOR_EXTRAPOLATE;
-  PetscOptionsBegin(comm, NULL, "Run", "Run");
-  PetscCall(PetscOptionsEnum("-load_predictor", "Start of each step's Newton iteration", "", IndPredictorTypes, (PetscEnum)app->predictor, (PetscEnum *)&app->predictor, NULL));
-  PetscCall(PetscOptionsBool("-quiet", "Print nothing but errors", "", app->quiet, &app->quiet, NULL));
+  /* From the start: a signal during the set-up (meshing, distribution) stops the run before its first step. */
+  PetscCall(IndSignalsInstall());
+  app->checkpoint_every = 10;
+  app->stop_after       = -1;
+  app->checkpointed     = -1;
+  PetscCall(PetscTime(&app->t_start));
+  {
+    time_t    now = time(NULL);
+    struct tm utc;
+    gmtime_r(&now, &utc);
+    strftime(app->start_time, sizeof(app->start_time), "%Y-%m-%dT%H:%M:%SZ", &utc);
+  }
+  PetscOptionsBegin(comm, NULL, IND_TITLE "Run", "Run");
+  PetscCall(IndOptionsEnum("-load_predictor", "Start of each step's Newton iteration", IndPredictorTypes, (PetscEnum)app->predictor,
+                           (PetscEnum *)&app->predictor, NULL));
+  PetscCall(IndOptionsBool("-quiet", "Print nothing but errors and warnings", app->quiet, &app->quiet, NULL));
+  PetscCall(IndOptionsInt("-checkpoint_every", "Write <output_dir>/checkpoint.h5 every N accepted steps (0: only on SIGTERM, SIGINT, SIGUSR1)",
+                          NULL, app->checkpoint_every, &app->checkpoint_every, NULL));
+  PetscCall(IndOptionsInt("-checkpoint_stop_after_step", "Stop with a checkpoint after this accepted step, as on SIGTERM (for tests)",
+                          "-1: never", app->stop_after, &app->stop_after, NULL));
   PetscOptionsEnd();
+  PetscCheck(app->checkpoint_every >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-checkpoint_every must be >= 0 (steps), got %" PetscInt_FMT, app->checkpoint_every);
+  {
+    /* Decided before the mesh, which may mesh a .geo into the output directory. */
+    PetscBool fields = PETSC_TRUE, curve = PETSC_TRUE, indenter, listing;
+    PetscCall(PetscOptionsGetBool(NULL, NULL, "-output_fields", &fields, NULL));
+    PetscCall(PetscOptionsGetBool(NULL, NULL, "-output_curve", &curve, NULL));
+    PetscCall(PetscOptionsHasName(NULL, NULL, "-indenter_type", &indenter));
+    PetscCall(PetscOptionsHasHelp(NULL, &listing));
+    PetscCall(IndRunDirSetUp(comm, (fields || (indenter && curve)) && !listing, &app->rundir));
+    if (app->rundir.restart) PetscCall(IndCheckpointCheck(comm, app->rundir.checkpoint));
+  }
 
   PetscCall(PetscLogStagePush(IndLog.setup));
   PetscCall(IndMeshCreate(comm, &app->mesh));
@@ -42,6 +80,11 @@ PetscErrorCode IndAppCreate(MPI_Comm comm, IndApp *out)
   PetscCall(VecDuplicate(app->U, &app->dU));
   PetscCall(PetscLogStagePop());
   PetscCall(IndOptionsCheckUnused(comm));
+  if (app->rundir.restart) {
+    IndSummary sum = app->summary;
+    PetscCall(IndCheckpointRead(app, app->rundir.checkpoint));
+    PetscCall(IndOutputResume(app->output, sum ? sum->n : 0, sum ? sum->pts : NULL));
+  }
 
   PetscCall(VecGetSize(app->U, &ndof));
   ncell = app->disc->ncell;
@@ -130,14 +173,84 @@ PetscErrorCode IndAppSolveStep(IndApp app, PetscReal t, IndStepResult *r)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+static PetscErrorCode Elapsed(IndApp app)
+{
+  PetscLogDouble now;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscTime(&now));
+  app->elapsed_now = now - app->t_start;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode Checkpoint(IndApp app)
+{
+  PetscLogDouble t0, t1;
+
+  PetscFunctionBeginUser;
+  if (!app->rundir.ready || app->checkpointed == app->path.accepted) PetscFunctionReturn(PETSC_SUCCESS);
+  app->checkpointed = app->path.accepted;
+  PetscCall(Elapsed(app));
+  PetscCall(PetscTime(&t0));
+  PetscCall(IndCheckpointWrite(app, app->rundir.checkpoint));
+  PetscCall(PetscTime(&t1));
+  if (!app->quiet) {
+    struct stat st;
+    double      mb = stat(app->rundir.checkpoint, &st) ? 0.0 : (double)st.st_size / (1 << 20);
+    PetscCall(PetscPrintf(app->comm, "  checkpoint after step %" PetscInt_FMT ": %.1f MB in %.2f s\n", app->path.accepted, mb,
+                          (double)(t1 - t0)));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode RemoveCheckpoint(IndApp app)
+{
+  PetscMPIInt rank;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(app->comm, &rank));
+  if (!rank && app->rundir.ready) (void)remove(app->rundir.checkpoint);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* A signal came: the state of the last accepted step goes to the checkpoint, and the run ends. */
+static PetscErrorCode Stop(IndApp app, int signum)
+{
+  const char *name = IndSignalName(signum);
+
+  PetscFunctionBeginUser;
+  PetscCall(Checkpoint(app));
+  app->stopped = signum;
+  if (app->rundir.ready)
+    PetscCall(PetscPrintf(app->comm,
+                          "indent: stopped by %s after step %" PetscInt_FMT "; checkpoint %s written: "
+                          "continue with the same options and -restart %s\n",
+                          name, app->path.accepted, app->rundir.checkpoint, app->rundir.dir));
+  else
+    PetscCall(PetscPrintf(app->comm, "indent: stopped by %s after step %" PetscInt_FMT " (no files, so no checkpoint)\n",
+                          name, app->path.accepted));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode IndAppRun(IndApp app)
 {
   IndLoadPath *lp = &app->path;
 
   PetscFunctionBeginUser;
+  if (app->rundir.restart && !app->quiet)
+    PetscCall(PetscPrintf(app->comm, "indent: continuing from %s after step %" PetscInt_FMT " (depth %g nm)\n",
+                          app->rundir.checkpoint, lp->accepted,
+                          app->contact ? (double)app->contact->indenter.depth : 0.0));
   while (!IndLoadPathDone(lp)) {
     const PetscReal t = IndLoadPathTarget(lp);
     IndStepResult   r;
+    int             signum;
+
+    PetscCall(IndSignalsPending(app->comm, &signum));
+    if (signum) {
+      PetscCall(Stop(app, signum));
+      break;
+    }
 
     PetscCall(IndAppSolveStep(app, t, &r));
     if (!r.converged) {
@@ -154,6 +267,8 @@ PetscErrorCode IndAppRun(IndApp app)
       else
         PetscCall(PetscPrintf(app->comm, "step %3" PetscInt_FMT "  load %.6f  newton %2" PetscInt_FMT "  linear %4" PetscInt_FMT "  plastic points %7" PetscInt_FMT "  cutbacks %2" PetscInt_FMT "  time %.3f s\n", lp->accepted, (double)r.lambda, r.newton, r.linear, r.plastic, lp->cutbacks, r.seconds));
     }
+    PetscCall(IndRunCheckStep(app, &r, &app->warnings, PETSC_TRUE));
+    PetscCall(IndOutputSetStepInfo(app->output, lp->accepted, r.t, r.lambda, r.depth, r.contact.load * 1e-3));
     PetscCall(IndOutputWriteStep(app->output, app->contact ? r.depth : r.lambda, app->U, app->assembly));
     if (app->contact) {
       IndCurvePoint p = {lp->accepted, r.t, r.depth, r.contact.load * 1e-3, r.contact.contact, r.contact.stick, r.contact.slip, r.newton, r.outer, r.linear, lp->cutbacks, r.contact.penetration, r.contact.area, r.contact.pileup, r.contact.deepest, r.seconds};
@@ -163,15 +278,33 @@ PetscErrorCode IndAppRun(IndApp app)
     if (app->monitor) PetscCall(app->monitor(app, &r, app->monitor_ctx));
     /* Unloading ends once the indenter has left the surface. */
     if (app->contact && IndLoadPathUnloading(lp, t) && r.contact.contact == 0) IndLoadPathFinish(lp);
+    if (lp->accepted == app->stop_after) IndSignalsRaise(SIGTERM);
+    else if (app->checkpoint_every && lp->accepted % app->checkpoint_every == 0 && !IndLoadPathDone(lp))
+      PetscCall(Checkpoint(app));
   }
-  if (app->summary) PetscCall(IndSummaryFinish(app->summary, &app->contact->indenter, app->output->dir, app->output->curve, app->quiet ? PETSC_FALSE : PETSC_TRUE));
+  if (app->stopped) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(Elapsed(app));
+  if (app->summary) {
+    IndRunInfo info = {app->start_time, app->elapsed_before + app->elapsed_now, app->rundir.restart, app->contact,
+                       &app->warnings};
+    PetscCall(IndSummaryFinish(app->summary, &app->contact->indenter, &info, app->output->dir, app->output->curve,
+      app->quiet ? PETSC_FALSE : PETSC_TRUE));
+  }
+  /* The run is complete: its checkpoint could only restart a finished run. */
+  PetscCall(RemoveCheckpoint(app));
   PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+int IndAppStoppedBy(IndApp app)
+{
+  return app->stopped;
 }
 
 PetscErrorCode IndAppDestroy(IndApp *app)
 {
   PetscFunctionBeginUser;
   if (!*app) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(IndSignalsRestore());
   PetscCall(VecDestroy(&(*app)->U));
   PetscCall(VecDestroy(&(*app)->Uprev));
   PetscCall(VecDestroy(&(*app)->dU));

@@ -5,6 +5,8 @@ static const char help[] = "indent: finite-element nanoindentation of elasto-pla
 #include <string.h>
 #include "ind_app.h"
 
+static int stopped; /* the signal that stopped the run after its checkpoint (0: none) */
+
 static PetscErrorCode Run(void)
 {
   IndApp app;
@@ -13,6 +15,7 @@ static PetscErrorCode Run(void)
   PetscCall(IndAppCreate(PETSC_COMM_WORLD, &app));
   /* the set-up has read (and listed) every option; a user asking for the list does not want the run */
   if (!IndHelpListing()) PetscCall(IndAppRun(app));
+  stopped = IndAppStoppedBy(app);
   PetscCall(IndAppDestroy(&app));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -38,5 +41,9 @@ int main(int argc, char **argv)
   if (!ierr) ierr = Run();
   /* a listing stopped by a bad input still shows what it read, then the error */
   if (IndHelpListing()) (void)IndHelpPrint(help);
-  return IndErrorFinish(ierr);
+  {
+    const int status = IndErrorFinish(ierr);
+    /* A batch script resubmits on IND_EXIT_CHECKPOINTED: the checkpoint is written, the run not finished. */
+    return status ? status : stopped ? IND_EXIT_CHECKPOINTED : 0;
+  }
 }

@@ -1,6 +1,7 @@
 #include <string.h>
 #include <petscsf.h>
-#include "ind_output.h"
+#include "output_impl.h"
+#include "ind_options.h"
 #include "ind_files.h"
 #include "ind_elasticity.h"
 #include "ind_version.h"
@@ -120,6 +121,10 @@ static PetscErrorCode OpenFile(IndOutput o)
   PetscInt     n;
 
   PetscFunctionBeginUser;
+  if (o->resume) {
+    PetscCall(IndOutputOpenResumed(o));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
   PetscCall(PetscViewerHDF5Open(comm, o->h5name, FILE_MODE_WRITE, &o->viewer));
   PetscCall(PetscViewerHDF5SetBaseDimension2(o->viewer, PETSC_TRUE));
   PetscCall(WriteProvenance(o));
@@ -152,6 +157,7 @@ static PetscErrorCode OpenFile(IndOutput o)
   PetscCall(ISView(topo, o->viewer));
   PetscCall(PetscViewerHDF5PopGroup(o->viewer));
   PetscCall(ISDestroy(&topo));
+  PetscCall(IndOutputWriteCellKeys(o));
   PetscCall(PetscViewerHDF5PushTimestepping(o->viewer));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -231,10 +237,11 @@ PetscErrorCode IndOutputCreate(IndMesh mesh, IndDisc disc, IndOutput *out)
   o->enabled = PETSC_TRUE;
   o->curve   = PETSC_TRUE;
   PetscCall(PetscStrncpy(o->dir, "output", sizeof(o->dir)));
-  PetscOptionsBegin(comm, NULL, "Output", "Output");
-  PetscCall(PetscOptionsString("-output_dir", "Directory for indent.h5 and indent.xdmf (created if missing)", "", o->dir, o->dir, sizeof(o->dir), NULL));
-  PetscCall(PetscOptionsBool("-output_fields", "Write field output (HDF5 + XDMF)", "", o->enabled, &o->enabled, NULL));
-  PetscCall(PetscOptionsBool("-output_curve", "Write the load-displacement curve (CSV) of an indentation", "", o->curve, &o->curve, NULL));
+  PetscOptionsBegin(comm, NULL, IND_TITLE "Output files", "Output");
+  PetscCall(PetscOptionsGetString(NULL, NULL, "-output_dir", o->dir, sizeof(o->dir), NULL)); /* listed by rundir.c */
+  PetscCall(IndOptionsBool("-output_fields", "Write field output (HDF5 + XDMF)", o->enabled, &o->enabled, NULL));
+  PetscCall(IndOptionsBool("-output_curve", "Write the load-displacement curve (CSV) of an indentation", o->curve, &o->curve,
+                           NULL));
   PetscOptionsEnd();
   PetscCheck(o->dir[0], comm, PETSC_ERR_ARG_WRONG, "-output_dir must not be empty");
   PetscCall(PetscSNPrintf(o->h5name, sizeof(o->h5name), "%s/indent.h5", o->dir));
@@ -352,17 +359,17 @@ PetscErrorCode IndOutputWriteStep(IndOutput o, PetscReal time, Vec U, IndAssembl
 
   PetscCall(PetscViewerHDF5SetTimestep(o->viewer, o->nsteps));
   PetscCall(PetscViewerHDF5PushGroup(o->viewer, "/fields"));
-  PetscCall(VecView(o->disp, o->viewer));
-  PetscCall(VecView(o->stress, o->viewer));
-  PetscCall(VecView(o->strain, o->viewer));
-  PetscCall(VecView(o->vonmises, o->viewer));
-  PetscCall(VecView(o->plastic, o->viewer));
-  PetscCall(VecView(o->back, o->viewer));
-  PetscCall(VecView(o->yielding, o->viewer));
+  PetscCall(IndOutputViewField(o, o->disp, PETSC_FALSE));
+  PetscCall(IndOutputViewField(o, o->stress, PETSC_TRUE));
+  PetscCall(IndOutputViewField(o, o->strain, PETSC_TRUE));
+  PetscCall(IndOutputViewField(o, o->vonmises, PETSC_TRUE));
+  PetscCall(IndOutputViewField(o, o->plastic, PETSC_TRUE));
+  PetscCall(IndOutputViewField(o, o->back, PETSC_TRUE));
+  PetscCall(IndOutputViewField(o, o->yielding, PETSC_TRUE));
   if (o->contact) {
     PetscCall(GatherContactFields(o, U));
-    PetscCall(VecView(o->pressure, o->viewer));
-    PetscCall(VecView(o->status, o->viewer));
+    PetscCall(IndOutputViewField(o, o->pressure, PETSC_FALSE));
+    PetscCall(IndOutputViewField(o, o->status, PETSC_FALSE));
   }
   PetscCall(PetscViewerHDF5PopGroup(o->viewer));
   PetscCall(PetscViewerFlush(o->viewer));
@@ -385,10 +392,9 @@ PetscErrorCode IndOutputCurvePoint(IndOutput o, const IndCurvePoint *p)
     PetscCall(PetscSNPrintf(path, sizeof(path), "%s/load_displacement.csv", o->dir));
     o->csv = fopen(path, "w");
     PetscCheck(o->csv, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "Cannot write '%s' (-output_dir)", path);
-    fprintf(o->csv, "step,t,depth_nm,load_uN,contact_nodes,stick,slip,newton,uzawa,linear,cutbacks,penetration_nm,contact_area_nm2,pileup_nm,deepest_nm,seconds\n");
+    IndOutputCurveHeader(o->csv);
   }
-  fprintf(o->csv, "%" PetscInt_FMT ",%.10g,%.12g,%.12g,%" PetscInt_FMT ",%" PetscInt_FMT ",%" PetscInt_FMT ",%" PetscInt_FMT ",%" PetscInt_FMT ",%" PetscInt_FMT ",%" PetscInt_FMT ",%.6g,%.10g,%.8g,%.10g,%.4f\n", p->step, (double)p->t, (double)p->depth, (double)p->load, p->contact, p->stick, p->slip, p->newton, p->outer,
-          p->linear, p->cutbacks, (double)p->penetration, (double)p->area, (double)p->pileup, (double)p->deepest, (double)p->seconds);
+  IndOutputCurveLine(o->csv, p);
   PetscCheck(fflush(o->csv) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Error writing %s/load_displacement.csv", o->dir);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -400,6 +406,7 @@ PetscErrorCode IndOutputDestroy(IndOutput *o)
   if ((*o)->csv) fclose((*o)->csv);
   if ((*o)->viewer) PetscCall(PetscViewerHDF5PopTimestepping((*o)->viewer));
   PetscCall(PetscViewerDestroy(&(*o)->viewer));
+  PetscCall(IndOutputPermDestroy(*o));
   PetscCall(VecDestroy(&(*o)->Uloc));
   PetscCall(VecDestroy(&(*o)->vloc));
   PetscCall(VecDestroy(&(*o)->disp));

@@ -1,17 +1,26 @@
 #include <stdio.h>
 #include "ind_summary.h"
+#include "ind_rundir.h"
+#include "ind_version.h"
+#include "ind_runchecks.h"
+#include "ind_options.h"
 
 PetscErrorCode IndOPParamsSetFromOptions(MPI_Comm comm, IndOPParams *p)
 {
   PetscFunctionBeginUser;
   IndOPParamsDefault(p);
-  PetscOptionsBegin(comm, NULL, "Oliver-Pharr analysis", "OP");
-  PetscCall(PetscOptionsReal("-op_fraction", "Fit the unloading points with P >= (1 - fraction) P_max", "", p->fraction, &p->fraction, NULL));
-  PetscCall(PetscOptionsReal("-op_epsilon", "Contact-depth factor: h_c = h_max - epsilon P_max / S", "", p->epsilon, &p->epsilon, NULL));
-  PetscCall(PetscOptionsReal("-op_beta", "Shape factor: E_r = sqrt(pi) / (2 beta) S / sqrt(A)", "", p->beta, &p->beta, NULL));
-  PetscCall(PetscOptionsReal("-op_indenter_modulus", "Indenter's Young's modulus (GPa; 0 rigid, diamond 1141)", "", p->E_indenter, &p->E_indenter, NULL));
-  PetscCall(PetscOptionsReal("-op_indenter_poisson", "Indenter's Poisson's ratio", "", p->nu_indenter, &p->nu_indenter, NULL));
-  PetscCall(PetscOptionsReal("-op_poisson", "Sample's Poisson's ratio, for its modulus from E_r", "", p->nu_sample, &p->nu_sample, NULL));
+  PetscOptionsBegin(comm, NULL, IND_TITLE "Oliver-Pharr analysis (-op_*)", "OP");
+  PetscCall(IndOptionsReal("-op_fraction", "Fit the unloading points with P >= (1 - fraction) P_max", "", NULL, p->fraction,
+                           &p->fraction, NULL));
+  PetscCall(IndOptionsReal("-op_epsilon", "Contact-depth factor: h_c = h_max - epsilon P_max / S", "", NULL, p->epsilon,
+                           &p->epsilon, NULL));
+  PetscCall(IndOptionsReal("-op_beta", "Shape factor: E_r = sqrt(pi) / (2 beta) S / sqrt(A)", "", NULL, p->beta, &p->beta, NULL));
+  PetscCall(IndOptionsReal("-op_indenter_modulus", "Indenter's Young's modulus (0 rigid, diamond 1141)", "GPa", NULL,
+                           p->E_indenter, &p->E_indenter, NULL));
+  PetscCall(IndOptionsReal("-op_indenter_poisson", "Indenter's Poisson's ratio", "", NULL, p->nu_indenter, &p->nu_indenter,
+                           NULL));
+  PetscCall(IndOptionsReal("-op_poisson", "Sample's Poisson's ratio, for its modulus from E_r", "", NULL, p->nu_sample,
+                           &p->nu_sample, NULL));
   PetscOptionsEnd();
   PetscCheck(p->fraction > 0 && p->fraction <= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-op_fraction must lie in (0, 1], got %g", (double)p->fraction);
   PetscCheck(p->epsilon > 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-op_epsilon must be > 0, got %g", (double)p->epsilon);
@@ -32,7 +41,6 @@ PetscErrorCode IndSummaryCreate(MPI_Comm comm, IndSummary *out)
   s->cap  = 256;
   PetscCall(PetscMalloc1(s->cap, &s->pts));
   PetscCall(IndOPParamsSetFromOptions(comm, &s->op));
-  PetscCall(PetscTime(&s->start));
   *out = s;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -79,20 +87,62 @@ static void Put(Entry *e, PetscInt *n, const char *key, const char *label, const
   (*n)++;
 }
 
-PetscErrorCode IndSummaryFinish(IndSummary s, const IndIndenter *ind, const char dir[], PetscBool write, PetscBool print)
+/* A JSON string literal of text (quotes, backslashes and control characters escaped). */
+static void JsonString(FILE *fp, const char *text)
+{
+  fputc('"', fp);
+  for (const char *c = text; *c; ++c) {
+    if (*c == '"' || *c == '\\') fprintf(fp, "\\%c", *c);
+    else if ((unsigned char)*c < 0x20) fprintf(fp, "\\u%04x", (unsigned)*c);
+    else fputc(*c, fp);
+  }
+  fputc('"', fp);
+}
+
+static PetscErrorCode WriteProvenance(FILE *fp, const IndRunInfo *info)
+{
+  char       *opts, petsc[256];
+  PetscMPIInt size;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_size(PETSC_COMM_WORLD, &size));
+  PetscCall(PetscGetVersion(petsc, sizeof(petsc)));
+  PetscCall(PetscOptionsGetAll(NULL, &opts));
+  fprintf(fp, "  \"status\": \"finished\",\n  \"indent_version\": ");
+  JsonString(fp, INDENT_VERSION);
+  fprintf(fp, ",\n  \"git_commit\": ");
+  JsonString(fp, INDENT_GIT_COMMIT);
+  fprintf(fp, ",\n  \"petsc_version\": ");
+  JsonString(fp, petsc);
+  fprintf(fp, ",\n  \"ranks\": %d,\n  \"start_time\": ", size);
+  JsonString(fp, info->start_time);
+  fprintf(fp, ",\n  \"warnings\": [");
+  for (PetscInt k = 0; k < info->warnings->n; ++k) {
+    fprintf(fp, "%s", k ? ", " : "");
+    JsonString(fp, info->warnings->text[k]);
+  }
+  fprintf(fp, "]");
+  fprintf(fp, ",\n  \"wall_seconds\": %.3f,\n  \"restarted\": %s,\n  \"options\": ", (double)info->wall,
+    info->restarted ? "true" : "false");
+  JsonString(fp, opts);
+  fprintf(fp, ",\n");
+  PetscCall(PetscFree(opts));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode IndSummaryFinish(IndSummary s, const IndIndenter *ind, const IndRunInfo *info, const char dir[],
+  PetscBool write, PetscBool print)
 {
   PetscReal     *h, *P, Hs = 0, Ers = 0, Es = 0;
   IndOPResult    r;
   const IndCurvePoint *pmax, *last;
   PetscInt       imax = 0, ne = 0, newton = 0, outer = 0, linear = 0, code;
-  PetscLogDouble now;
   Entry          e[40];
   char           why[256] = "";
   PetscMPIInt    rank;
 
   PetscFunctionBeginUser;
   if (!s->n) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCall(PetscTime(&now));
   PetscCall(PetscMalloc2(s->n, &h, s->n, &P));
   for (PetscInt i = 0; i < s->n; ++i) {
     h[i] = s->pts[i].depth;
@@ -108,6 +158,11 @@ PetscErrorCode IndSummaryFinish(IndSummary s, const IndIndenter *ind, const char
   if (code == 1) PetscCall(PetscSNPrintf(why, sizeof(why), "fewer than 3 unloading points with P >= %g P_max: raise -load_unload_steps", (double)(1 - s->op.fraction)));
   else if (code) PetscCall(PetscSNPrintf(why, sizeof(why), "the unloading branch is not a power law"));
   else IndOPFromArea(&s->op, &r, pmax->area, &Hs, &Ers, &Es);
+  if (!code && info->contact) {
+    char text[IND_WARNING_LEN];
+    PetscCall(IndRunCheckContactArea(info->contact, r.A, text, sizeof(text)));
+    if (text[0]) PetscCall(IndWarningsAdd(s->comm, info->warnings, "op_area", print, text));
+  }
   PetscCall(PetscFree2(h, P));
 
   Put(e, &ne, "P_max_uN", "largest load P_max", "uN", pmax->load, PETSC_FALSE);
@@ -140,7 +195,7 @@ PetscErrorCode IndSummaryFinish(IndSummary s, const IndIndenter *ind, const char
   Put(e, &ne, "newton", "Newton iterations", "", (PetscReal)newton, PETSC_TRUE);
   Put(e, &ne, "uzawa", "outer (Uzawa) iterations", "", (PetscReal)outer, PETSC_TRUE);
   Put(e, &ne, "linear", "linear iterations", "", (PetscReal)linear, PETSC_TRUE);
-  Put(e, &ne, "wall_time_s", "wall time of the run", "s", (PetscReal)(now - s->start), PETSC_FALSE);
+  Put(e, &ne, "wall_time_s", "wall time of the run", "s", (PetscReal)info->wall, PETSC_FALSE);
 
   if (print) {
     PetscCall(PetscPrintf(s->comm, "summary (%s indenter%s):\n", IndIndenterTypes[ind->type], write ? "; also in summary.txt and summary.json" : ""));
@@ -153,21 +208,29 @@ PetscErrorCode IndSummaryFinish(IndSummary s, const IndIndenter *ind, const char
 
   PetscCallMPI(MPI_Comm_rank(s->comm, &rank));
   if (write && !rank) {
-    char  path[PETSC_MAX_PATH_LEN];
+    char  path[PETSC_MAX_PATH_LEN], tmp[PETSC_MAX_PATH_LEN];
     FILE *fp;
     PetscCall(PetscSNPrintf(path, sizeof(path), "%s/summary.txt", dir));
-    fp = fopen(path, "w");
-    PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "Cannot write '%s' (-output_dir)", path);
+    PetscCall(PetscSNPrintf(tmp, sizeof(tmp), "%s.tmp", path));
+    fp = fopen(tmp, "w");
+    PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "Cannot write '%s' (-output_dir)", tmp);
     for (PetscInt k = 0; k < ne; ++k) fprintf(fp, "%-58s %.10g %s\n", e[k].label, (double)e[k].value, e[k].unit);
     if (code) fprintf(fp, "no Oliver-Pharr analysis: %s\n", why);
-    PetscCheck(fclose(fp) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Error writing '%s'", path);
+    for (PetscInt k = 0; k < info->warnings->n; ++k) fprintf(fp, "warning: %s\n", info->warnings->text[k]);
+    PetscCheck(fclose(fp) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Error writing '%s'", tmp);
+    PetscCall(IndRenameInto(tmp, path));
     PetscCall(PetscSNPrintf(path, sizeof(path), "%s/summary.json", dir));
-    fp = fopen(path, "w");
-    PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "Cannot write '%s' (-output_dir)", path);
-    fprintf(fp, "{\n  \"indenter\": \"%s\",\n  \"op_fraction\": %.10g,\n  \"op_epsilon\": %.10g,\n  \"op_beta\": %.10g", IndIndenterTypes[ind->type], (double)s->op.fraction, (double)s->op.epsilon, (double)s->op.beta);
+    PetscCall(PetscSNPrintf(tmp, sizeof(tmp), "%s.tmp", path));
+    fp = fopen(tmp, "w");
+    PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "Cannot write '%s' (-output_dir)", tmp);
+    fprintf(fp, "{\n");
+    PetscCall(WriteProvenance(fp, info));
+    fprintf(fp, "  \"indenter\": \"%s\",\n  \"op_fraction\": %.10g,\n  \"op_epsilon\": %.10g,\n  \"op_beta\": %.10g",
+      IndIndenterTypes[ind->type], (double)s->op.fraction, (double)s->op.epsilon, (double)s->op.beta);
     for (PetscInt k = 0; k < ne; ++k) fprintf(fp, ",\n  \"%s\": %.12g", e[k].key, (double)e[k].value);
     fprintf(fp, "\n}\n");
-    PetscCheck(fclose(fp) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Error writing '%s'", path);
+    PetscCheck(fclose(fp) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Error writing '%s'", tmp);
+    PetscCall(IndRenameInto(tmp, path));
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -47,7 +47,7 @@ def run_indent(prog, args, options, out):
     """Runs indent on --mesh with options into out; its wall time, or None (with a message) if it
     failed or left an option unused."""
     cmd = [args.mpiexec, *args.mpiexec_args, "-n", str(args.np), args.indent, "-mesh_file", args.mesh, *options,
-           "-output_dir", out, "-options_left"]
+           "-output_dir", out, "-output_overwrite", "-options_left"]
     print("+", " ".join(shlex.quote(c) for c in cmd), flush=True)
     start = time.time()
     try:

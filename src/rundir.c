@@ -1,0 +1,158 @@
+#define _XOPEN_SOURCE 700 /* realpath */
+#include <errno.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+#include "ind_rundir.h"
+#include "ind_files.h"
+#include "ind_options.h"
+
+/* Every file a run (and scripts/plot-indent.py after it) puts in its directory: a fresh run in the
+   directory must not leave any of an earlier run's beside its own. */
+static const char *const RunFiles[] = {
+  "indent.h5",   "indent.xdmf",  "indent.xdmf.tmp", "load_displacement.csv", "summary.txt",      "summary.json",
+  "checkpoint.h5", "checkpoint.h5.tmp", "mesh.msh", "mesh.msh.tmp", "mesh.msh.log", "imprint.csv", "imprint.png", "stress_slice.png",
+  "load_displacement.png"};
+#define NRUNFILES ((int)(sizeof(RunFiles) / sizeof(RunFiles[0])))
+
+PetscErrorCode IndRenameInto(const char tmp[], const char path[])
+{
+  PetscFunctionBeginUser;
+  PetscCheck(rename(tmp, path) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Cannot rename '%s' to '%s': %s", tmp, path,
+             strerror(errno));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* On rank 0: what the path is (0 missing, 1 directory, 2 something else) and the run files in it. */
+static void Inspect(const char dir[], int *kind, char found[], size_t len)
+{
+  struct stat st;
+
+  found[0] = 0;
+  if (stat(dir, &st)) {
+    *kind = 0;
+    return;
+  }
+  *kind = S_ISDIR(st.st_mode) ? 1 : 2;
+  if (*kind != 1) return;
+  for (int k = 0; k < NRUNFILES; ++k) {
+    char path[2 * PETSC_MAX_PATH_LEN];
+    snprintf(path, sizeof(path), "%s/%s", dir, RunFiles[k]);
+    if (access(path, F_OK)) continue;
+    if (strlen(found) + strlen(RunFiles[k]) + 3 < len) {
+      if (found[0]) strcat(found, ", ");
+      strcat(found, RunFiles[k]);
+    }
+  }
+}
+
+/* -output_overwrite: the earlier run's files go, except the mesh this run reads (-mesh_file may be the
+   earlier run's mesh.msh). */
+static PetscErrorCode RemoveRunFiles(MPI_Comm comm, const char dir[])
+{
+  char        mesh[PETSC_MAX_PATH_LEN] = "", real_mesh[PETSC_MAX_PATH_LEN] = "", failed[2 * PETSC_MAX_PATH_LEN] = "";
+  PetscMPIInt rank;
+  int         err = 0;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  PetscCall(PetscOptionsGetString(NULL, NULL, "-mesh_file", mesh, sizeof(mesh), NULL));
+  if (!rank) {
+    if (mesh[0] && !realpath(mesh, real_mesh)) real_mesh[0] = 0;
+    for (int k = 0; k < NRUNFILES && !err; ++k) {
+      char path[2 * PETSC_MAX_PATH_LEN], real[PETSC_MAX_PATH_LEN];
+      snprintf(path, sizeof(path), "%s/%s", dir, RunFiles[k]);
+      if (access(path, F_OK)) continue;
+      if (real_mesh[0] && realpath(path, real) && !strcmp(real, real_mesh)) continue;
+      if (unlink(path)) {
+        err = errno;
+        snprintf(failed, sizeof(failed), "%s", path);
+      }
+    }
+  }
+  PetscCallMPI(MPI_Bcast(&err, 1, MPI_INT, 0, comm));
+  PetscCallMPI(MPI_Bcast(failed, sizeof(failed), MPI_CHAR, 0, comm));
+  PetscCheck(!err, comm, PETSC_ERR_FILE_WRITE, "-output_overwrite: cannot remove '%s': %s", failed, strerror(err));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The checkpoint a -restart value names: the file itself, or checkpoint.h5 in a directory. */
+static PetscErrorCode RestartFile(MPI_Comm comm, const char value[], char file[], size_t len)
+{
+  PetscBool isdir = PETSC_FALSE, isfile = PETSC_FALSE;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscTestDirectory(value, 'r', &isdir));
+  if (isdir) PetscCall(PetscSNPrintf(file, len, "%s/checkpoint.h5", value));
+  else PetscCall(PetscStrncpy(file, value, len));
+  PetscCall(PetscTestFile(file, 'r', &isfile));
+  PetscCheck(isfile, comm, PETSC_ERR_FILE_OPEN, "-restart %s: no checkpoint %s%s", value,
+    isdir ? "in that directory (" : "file '",
+             isdir ? "checkpoint.h5)" : "'");
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode IndRunDirSetUp(MPI_Comm comm, PetscBool writes, IndRunDir *rd)
+{
+  char        restart[PETSC_MAX_PATH_LEN] = "", found[1024];
+  PetscBool   has_restart = PETSC_FALSE;
+  PetscMPIInt rank;
+  int         kind = 0;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscMemzero(rd, sizeof(*rd)));
+  PetscCall(PetscStrncpy(rd->dir, "output", sizeof(rd->dir)));
+  PetscOptionsBegin(comm, NULL, IND_TITLE "Output directory and restart", "Output");
+  PetscCall(IndOptionsString("-output_dir", "Directory of the run's files (created if missing)", "dir", NULL, rd->dir, rd->dir,
+                             sizeof(rd->dir), NULL));
+  PetscCall(IndOptionsBool("-output_overwrite", "Replace the files of an earlier run in -output_dir", rd->overwrite,
+                           &rd->overwrite, NULL));
+  PetscCall(IndOptionsString("-restart", "Continue from a checkpoint: its file, or the directory holding checkpoint.h5",
+                             "file or dir", "none", restart, restart, sizeof(restart), &has_restart));
+  PetscOptionsEnd();
+  PetscCheck(rd->dir[0], comm, PETSC_ERR_ARG_WRONG, "-output_dir must not be empty");
+  PetscCall(PetscSNPrintf(rd->checkpoint, sizeof(rd->checkpoint), "%s/checkpoint.h5", rd->dir));
+  PetscCheck(!has_restart || restart[0], comm, PETSC_ERR_ARG_WRONG,
+    "-restart needs a checkpoint file or the directory holding one");
+  PetscCheck(!(has_restart && rd->overwrite), comm, PETSC_ERR_ARG_INCOMP,
+    "-restart continues a run and -output_overwrite replaces it: give one");
+  if (!writes && !has_restart) PetscFunctionReturn(PETSC_SUCCESS);
+
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  if (!rank) Inspect(rd->dir, &kind, found, sizeof(found));
+  PetscCallMPI(MPI_Bcast(&kind, 1, MPI_INT, 0, comm));
+  PetscCallMPI(MPI_Bcast(found, sizeof(found), MPI_CHAR, 0, comm));
+  PetscCheck(kind != 2, comm, PETSC_ERR_FILE_OPEN, "-output_dir '%s' exists and is not a directory", rd->dir);
+
+  if (has_restart) {
+    char file[PETSC_MAX_PATH_LEN], real_ckpt[PETSC_MAX_PATH_LEN] = "", real_here[PETSC_MAX_PATH_LEN] = "";
+    PetscCall(RestartFile(comm, restart, file, sizeof(file)));
+    /* Output continues beside the checkpoint: the run's files there are the earlier part of this run. */
+    if (!rank) {
+      if (!realpath(file, real_ckpt)) real_ckpt[0] = 0;
+      if (kind != 1 || !realpath(rd->checkpoint, real_here)) real_here[0] = 0;
+    }
+    PetscCallMPI(MPI_Bcast(real_ckpt, sizeof(real_ckpt), MPI_CHAR, 0, comm));
+    PetscCallMPI(MPI_Bcast(real_here, sizeof(real_here), MPI_CHAR, 0, comm));
+    {
+      PetscBool same;
+      PetscCall(PetscStrcmp(real_ckpt, real_here, &same));
+      PetscCheck(same && real_ckpt[0], comm, PETSC_ERR_ARG_INCOMP,
+                 "-restart %s: the checkpoint must lie in -output_dir '%s' (the run continues there): give "
+                 "-output_dir the checkpoint's directory",
+                 restart, rd->dir);
+    }
+    rd->restart = rd->ready = PETSC_TRUE;
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  if (found[0]) {
+    PetscCheck(rd->overwrite, comm, PETSC_ERR_FILE_OPEN,
+               "-output_dir '%s' already holds a run (%s): give -output_overwrite to replace it, -restart %s to "
+               "continue it, or another -output_dir",
+               rd->dir, found, rd->dir);
+    PetscCall(RemoveRunFiles(comm, rd->dir));
+  }
+  PetscCall(IndMakeDirectory(comm, rd->dir, "-output_dir"));
+  rd->ready = PETSC_TRUE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
