@@ -1,4 +1,5 @@
 #include "ind_solver.h"
+#include "ind_options.h"
 
 /* The free rows see the prescribed values, not U's, on constrained dofs: the residual of a free row
    then does not depend on constrained entries of U, so the Jacobian with those rows and columns
@@ -139,7 +140,7 @@ PetscErrorCode IndSolverCreate(DM dm, IndAssembly assembly, IndBC bc, IndContact
      per solve on average, more at the top of the unloading) 8% of its Krylov iterations. */
   PetscCall(KSPGMRESSetRestart(ksp, 100));
   /* Inexact Newton: each linear solve reduces the nonlinear residual 1e5 times, not 1e10. On the
-     README's paper case that kept the Newton iterations (136) and halved the Krylov ones (33 to 17
+     paper case at h_tip 15 that kept the Newton iterations (136) and halved the Krylov ones (33 to 17
      per Newton iteration); 1e-4 and Eisenstat-Walker cost more Newton iterations than they saved
      (doc/performance.md). */
   PetscCall(KSPSetTolerances(ksp, 1e-5, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT));
@@ -160,15 +161,16 @@ PetscErrorCode IndSolverCreate(DM dm, IndAssembly assembly, IndBC bc, IndContact
   if (contact) {
     /* Semi-smooth Newton is only locally convergent: at a reversal (the top of an unloading curve)
        full steps cycled between stick and slip until the step was cut, three times in a row on the
-       README's paper case. Backtracking on |F|^2, the standard globalization of semi-smooth Newton,
+       paper case at h_tip 15. Backtracking on |F|^2, the standard globalization of semi-smooth Newton,
        took every step there with 5 Newton iterations on average. */
     SNESLineSearch ls;
     PetscCall(SNESGetLineSearch(s->snes, &ls));
     PetscCall(SNESLineSearchSetType(ls, SNESLINESEARCHBT));
   }
   s->stall_its = 10;
-  PetscOptionsBegin(PetscObjectComm((PetscObject)dm), NULL, "Newton", "Solver");
-  PetscCall(PetscOptionsInt("-newton_stall_its", "Newton fails after this many iterations without a 1% smaller residual (0: never)", "", s->stall_its, &s->stall_its, NULL));
+  PetscOptionsBegin(PetscObjectComm((PetscObject)dm), NULL, IND_TITLE "Newton", "Solver");
+  PetscCall(IndOptionsInt("-newton_stall_its", "Newton fails after this many iterations without a 1% smaller residual (0: never)",
+                          NULL, s->stall_its, &s->stall_its, NULL));
   PetscOptionsEnd();
   PetscCheck(s->stall_its >= 0, PetscObjectComm((PetscObject)dm), PETSC_ERR_ARG_OUTOFRANGE, "-newton_stall_its must be >= 0, got %" PetscInt_FMT, s->stall_its);
   PetscCall(SNESSetConvergenceTest(s->snes, ConvergedUnlessStalled, s, NULL));
