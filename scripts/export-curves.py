@@ -1,0 +1,305 @@
+#!/usr/bin/env python3
+"""The curve and the residual imprint of an indentation run in the formats analysis tools read.
+
+  /usr/bin/python3 scripts/export-curves.py RUN_DIR [--out DIR] [--segment-seconds S]
+                                            [--gsf-pixels N] [--gsf-half-width NM]
+
+Reads RUN_DIR/load_displacement.csv, RUN_DIR/summary.json (or the options stored in indent.h5) and
+RUN_DIR/indent.h5, and writes into DIR (default RUN_DIR):
+
+  curve.niget          NIGET's native format: '#NIGET a b c d' (row indices of the contact point, the
+                       start of the hold, the start of the unloading and the end), then depth (nm) and
+                       force (mN), tab-separated
+  curve_hysitron.txt   Hysitron TriboScan text export: a date line, an empty line, 'Number of Points = N',
+                       then Depth (nm), Load (uN), Time (s); read by the micromechanics package and NIGET
+  imprint.xyz          the top surface at the last step as plain 'x y z' lines, nm: every vertex at its
+                       deformed position, height relative to the undeformed surface, half and quarter
+                       models mirrored to the full plane (Gwyddion: import as XYZ data)
+  imprint.gsf          the same surface interpolated linearly onto a square grid (Gwyddion Simple Field,
+                       metres), centred on the indenter axis
+
+Both curves start with the undeformed state (t = 0, depth 0, load 0), which the CSV does not list, so
+that NIGET's contact point (whose depth and force it subtracts from the curve) is the first touch.
+The run's pseudo-time t becomes seconds through --segment-seconds (a unit of t: the loading segment).
+Exit status 2 on bad input.
+"""
+import argparse
+import csv
+import datetime
+import json
+import os
+import shlex
+import sys
+
+import h5py
+import numpy as np
+
+CSV_NAME, SUMMARY_NAME, H5_NAME = "load_displacement.csv", "summary.json", "indent.h5"
+# Steps end exactly on the load program's segment ends (src/loadpath.c); the CSV prints t with 10
+# significant digits, so this separates an end from the next step (at least 1/1024 of a segment away).
+T_TOL = 1e-8
+# Vertices on a plane of the mesh are exact up to round-off: relative to the model size.
+REL_TOL = 1e-9
+CELL_FACES = {  # local faces as cyclic vertex lists (VTK order for the hexahedron)
+    4: [(1, 2, 3), (0, 2, 3), (0, 1, 3), (0, 1, 2)],
+    8: [(0, 1, 2, 3), (4, 5, 6, 7), (0, 1, 5, 4), (1, 2, 6, 5), (2, 3, 7, 6), (3, 0, 4, 7)],
+}
+
+
+class InputError(Exception):
+    """A missing or malformed input: one line, exit status 2."""
+
+
+# ----------------------------------------------------------------------------------------- inputs
+def read_curve(path):
+    if not os.path.isfile(path):
+        raise InputError(f"{path}: no such file (a run with an indenter writes it)")
+    with open(path, newline="") as f:
+        rows = list(csv.DictReader(f))
+    need = ("t", "depth_nm", "load_uN")
+    if not rows or any(c not in rows[0] for c in need):
+        raise InputError(f"{path}: no data rows or missing one of the columns {', '.join(need)}")
+    try:
+        cols = need + (("contact_area_nm2",) if "contact_area_nm2" in rows[0] else ())
+        return {c: np.array([float(r[c]) for r in rows]) for c in cols}
+    except (TypeError, ValueError) as e:
+        raise InputError(f"{path}: unreadable number ({e})") from None
+
+
+def run_options(run_dir, h5):
+    """The options string of the run: summary.json's, or indent.h5's for a run without a summary
+    (stopped before the end)."""
+    path = os.path.join(run_dir, SUMMARY_NAME)
+    if os.path.isfile(path):
+        try:
+            with open(path) as f:
+                summary = json.load(f)
+        except (OSError, ValueError) as e:
+            raise InputError(f"{path}: not JSON ({e})") from None
+        return summary.get("options", ""), summary.get("start_time")
+    if "options" in h5.attrs:
+        return h5.attrs["options"].decode(), None
+    raise InputError(f"{run_dir}: neither {SUMMARY_NAME} nor options in {H5_NAME}")
+
+
+def option_value(options, name, default):
+    words = shlex.split(options)
+    for k, w in enumerate(words[:-1]):
+        if w == name:
+            try:
+                return float(words[k + 1])
+            except ValueError:
+                raise InputError(f"option {name} {words[k + 1]}: not a number") from None
+    return default
+
+
+# ------------------------------------------------------------------------------------------ curves
+def with_origin(curve):
+    """The curve with the undeformed state prepended (t = 0: lambda = 0, so depth and load are 0)."""
+    if curve["t"][0] <= 0:
+        return dict(curve)
+    return {c: np.r_[0.0, v] for c, v in curve.items()}
+
+
+def segment_indices(curve, hold):
+    """NIGET's four row indices: the contact point (last row without load before the load rises),
+    the end of loading (t = 1), the end of the hold (t = 1 + hold) and the last row. A run stopped
+    early has its missing segments empty (the indices equal)."""
+    t, p = curve["t"], curve["load_uN"]
+    last = len(t) - 1
+    loaded = np.flatnonzero(p > 0)
+    contact = max(int(loaded[0]) - 1, 0) if len(loaded) else 0
+    load_end = int(np.flatnonzero(t <= 1 + T_TOL)[-1])
+    hold_end = int(np.flatnonzero(t <= 1 + hold + T_TOL)[-1])
+    return contact, max(load_end, contact), max(hold_end, contact), last
+
+
+def write_niget(path, curve, idx):
+    with open(path, "w", newline="\n") as f:
+        f.write("#NIGET %d %d %d %d\n" % idx)
+        for h, p in zip(curve["depth_nm"], curve["load_uN"]):
+            f.write(f"{h:.12g}\t{p / 1000.0:.12g}\n")  # force in mN
+    print(f"wrote {path}")
+
+
+def write_hysitron(path, curve, seconds_per_t, start_time):
+    """TriboScan's text export as micromechanics (Indentation.loadHysitron) and NIGET read it: line 1
+    a date, line 2 empty, line 3 'Number of Points = N', line 4 the column names; latin-1, as the
+    instrument writes the micro sign."""
+    when = datetime.datetime.now(datetime.timezone.utc)
+    if start_time:
+        try:
+            when = datetime.datetime.strptime(start_time, "%Y-%m-%dT%H:%M:%SZ")
+        except ValueError:
+            pass
+    n = len(curve["t"])
+    with open(path, "w", encoding="latin-1", newline="\n") as f:
+        f.write(when.strftime("%a %b %d %H:%M:%S %Y") + "\n\n")
+        f.write(f"Number of Points = {n}\n")
+        f.write("Depth (nm)\tLoad (\u00b5N)\tTime (s)\n")
+        for h, p, t in zip(curve["depth_nm"], curve["load_uN"], curve["t"]):
+            f.write(f"{h:.12g}\t{p:.12g}\t{t * seconds_per_t:.12g}\n")
+    print(f"wrote {path}")
+
+
+# ----------------------------------------------------------------------------------------- imprint
+def dataset(h5, name, path):
+    if name not in h5:
+        raise InputError(f"{path}: dataset /{name} missing")
+    return h5[name]
+
+
+def top_surface(h5, path):
+    """Top-surface vertices of the last step: deformed (x, y), height of the deformed surface above
+    the undeformed one, the triangles of the top faces in local numbers, and the mirror axes."""
+    x = dataset(h5, "geometry/vertices", path)[:]
+    cells = dataset(h5, "topology/cells", path)[:].astype(np.int64)
+    disp = dataset(h5, "fields/displacement", path)
+    if x.ndim != 2 or x.shape[1] != 3 or cells.ndim != 2 or cells.shape[1] not in CELL_FACES or disp.shape[0] == 0:
+        raise InputError(f"{path}: expected vertices (N, 3), cells (C, 4 or 8) and a displacement step")
+    u = disp[disp.shape[0] - 1]
+    lo, hi = x.min(axis=0), x.max(axis=0)
+    tol = REL_TOL * float(np.max(hi - lo))
+    on_top = np.abs(x[:, 2] - hi[2]) <= tol
+    flags = on_top[cells]
+    tris = []
+    for face in CELL_FACES[cells.shape[1]]:
+        v = cells[flags[:, face].all(axis=1)][:, face]
+        tris += [v[:, [0, k, k + 1]] for k in range(1, len(face) - 1)]
+    verts = np.flatnonzero(on_top)
+    local = np.full(len(x), -1)
+    local[verts] = np.arange(len(verts))
+    xy = x[verts, :2] + u[verts, :2]
+    height = x[verts, 2] + u[verts, 2] - hi[2]
+    # A symmetry plane x = 0 or y = 0 bounds the model with the body on its positive side.
+    axes = [a for a in (0, 1) if abs(lo[a]) <= tol and hi[a] > tol]
+    return xy, height, local[np.concatenate(tris)], axes, tol
+
+
+def mirror(xy, height, tris, axes, tol):
+    """Reflection across x = 0 and/or y = 0; points on a mirror line are shared, not doubled."""
+    for a in axes:
+        on_line = np.abs(xy[:, a]) <= tol
+        image = np.where(on_line, np.arange(len(xy)), len(xy) + np.cumsum(~on_line) - 1)
+        flipped = xy[~on_line].copy()
+        flipped[:, a] *= -1
+        tris = np.vstack([tris, image[tris][:, ::-1]])
+        xy, height = np.vstack([xy, flipped]), np.r_[height, height[~on_line]]
+    return xy, height, tris
+
+
+def write_xyz(path, xy, height):
+    order = np.lexsort((xy[:, 1], xy[:, 0]))
+    np.savetxt(path, np.column_stack([xy[order], height[order]]), fmt="%.10g", delimiter=" ")
+    print(f"wrote {path}")
+
+
+def node_range(lo, hi, first, step, count):
+    """First and last grid node in [lo, hi] (with round-off slack, so that a node on an edge is found)."""
+    return max(int(np.ceil((lo - first) / step - 1e-9)), 0), min(int(np.floor((hi - first) / step + 1e-9)), count - 1)
+
+
+def interpolate(xy, height, tris, gx, gy):
+    """Linear interpolation of the triangulated surface at the grid nodes (gx[j], gy[i]); NaN where
+    no triangle covers a node."""
+    grid = np.full((len(gy), len(gx)), np.nan)
+    dx, dy = gx[1] - gx[0], gy[1] - gy[0]
+    for a, b, c in tris:  # one small bounding box per triangle, not every node per triangle
+        pa, pb, pc = xy[a], xy[b], xy[c]
+        lo, hi = np.minimum(np.minimum(pa, pb), pc), np.maximum(np.maximum(pa, pb), pc)
+        j0, j1 = node_range(lo[0], hi[0], gx[0], dx, len(gx))
+        i0, i1 = node_range(lo[1], hi[1], gy[0], dy, len(gy))
+        if j0 > j1 or i0 > i1:
+            continue
+        X, Y = np.meshgrid(gx[j0:j1 + 1], gy[i0:i1 + 1])
+        det = (pb[1] - pc[1]) * (pa[0] - pc[0]) + (pc[0] - pb[0]) * (pa[1] - pc[1])
+        if det == 0:
+            continue
+        la = ((pb[1] - pc[1]) * (X - pc[0]) + (pc[0] - pb[0]) * (Y - pc[1])) / det
+        lb = ((pc[1] - pa[1]) * (X - pc[0]) + (pa[0] - pc[0]) * (Y - pc[1])) / det
+        lc = 1 - la - lb
+        inside = (la >= -1e-9) & (lb >= -1e-9) & (lc >= -1e-9)
+        block = grid[i0:i1 + 1, j0:j1 + 1]
+        block[inside] = (la * height[a] + lb * height[b] + lc * height[c])[inside]
+    return grid
+
+
+def grid_axis(half, pixels):
+    """Pixel centres of a grid of the given half-width, as Gwyddion places them (XOffset + (j + 1/2) dx)."""
+    step = 2 * half / pixels
+    return -half + (np.arange(pixels) + 0.5) * step
+
+
+def write_gsf(path, grid, half, title):
+    """Gwyddion Simple Field 1.0: the magic line, 'name = value' lines, 1 to 4 NUL bytes to a multiple
+    of 4, then XRes x YRes little-endian float32, row by row (row i at y = YOffset + (i + 1/2) dy)."""
+    m = 1e-9  # nm to m: Gwyddion keeps base SI units
+    header = (f"Gwyddion Simple Field 1.0\nXRes = {grid.shape[1]}\nYRes = {grid.shape[0]}\n"
+              f"XReal = {2 * half * m:.10g}\nYReal = {2 * half * m:.10g}\nXOffset = {-half * m:.10g}\n"
+              f"YOffset = {-half * m:.10g}\nTitle = {title}\nXYUnits = m\nZUnits = m\n").encode("ascii")
+    with open(path, "wb") as f:
+        f.write(header + b"\0" * (4 - len(header) % 4))
+        f.write((grid * m).astype("<f4").tobytes(order="C"))
+    print(f"wrote {path}")
+
+
+# -------------------------------------------------------------------------------------------- main
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("run_dir", help="output directory of an indent run with an indenter")
+    ap.add_argument("--out", help="directory for the files (default RUN_DIR)")
+    ap.add_argument("--segment-seconds", type=float, default=10.0,
+                    help="seconds per unit of the pseudo-time t (the loading segment), default 10")
+    ap.add_argument("--gsf-pixels", type=int, default=257,
+                    help="pixels per side of imprint.gsf, default 257 (odd: a pixel centre on the indenter axis)")
+    ap.add_argument("--gsf-half-width", type=float,
+                    help="half-width of imprint.gsf in nm (default: 3 contact radii at the largest load)")
+    args = ap.parse_args(argv)
+    try:
+        bad_width = args.gsf_half_width is not None and args.gsf_half_width <= 0
+        if args.segment_seconds <= 0 or args.gsf_pixels < 2 or bad_width:
+            raise InputError("--segment-seconds and --gsf-half-width must be > 0 and --gsf-pixels >= 2")
+        if not os.path.isdir(args.run_dir):
+            raise InputError(f"{args.run_dir}: no such run directory")
+        curve = read_curve(os.path.join(args.run_dir, CSV_NAME))
+        h5_path = os.path.join(args.run_dir, H5_NAME)
+        if not os.path.isfile(h5_path):
+            raise InputError(f"{h5_path}: no such file (the imprint needs -output_fields 1)")
+        try:
+            h5 = h5py.File(h5_path, "r")
+        except OSError as e:
+            raise InputError(f"{h5_path}: cannot open as HDF5 ({e})") from None
+        with h5:
+            options, start_time = run_options(args.run_dir, h5)
+            xy, height, tris, axes, tol = top_surface(h5, h5_path)
+        hold = option_value(options, "-load_hold", 0.0)
+        xy, height, tris = mirror(xy, height, tris, axes, tol)
+        reach = float(min(np.abs(xy[:, 0]).max(), np.abs(xy[:, 1]).max()))
+        if args.gsf_half_width is not None:
+            half = args.gsf_half_width
+        else:
+            # Three radii of the largest contact (area times the symmetry factor) hold the imprint and
+            # its pile-up; without an area, three depths.
+            a_max = float(curve["contact_area_nm2"].max()) if "contact_area_nm2" in curve else 0.0
+            radius = float(np.sqrt(a_max / np.pi)) if a_max > 0 else float(curve["depth_nm"].max())
+            half = min(3.0 * radius, 0.99 * reach)
+        gx = grid_axis(half, args.gsf_pixels)
+        grid = interpolate(xy, height, tris, gx, gx)
+        if np.isnan(grid).any():
+            raise InputError(f"imprint.gsf: {int(np.isnan(grid).sum())} grid nodes lie outside the top surface "
+                             f"(half-width {half:.6g} nm): give a smaller --gsf-half-width")
+    except InputError as e:
+        print(f"export-curves: error: {e}", file=sys.stderr)
+        return 2
+    out = args.out or args.run_dir
+    os.makedirs(out, exist_ok=True)
+    full = with_origin(curve)
+    write_niget(os.path.join(out, "curve.niget"), full, segment_indices(full, hold))
+    write_hysitron(os.path.join(out, "curve_hysitron.txt"), full, args.segment_seconds, start_time)
+    write_xyz(os.path.join(out, "imprint.xyz"), xy, height)
+    write_gsf(os.path.join(out, "imprint.gsf"), grid, half, "residual imprint height")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
