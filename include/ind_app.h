@@ -53,6 +53,11 @@ struct _p_IndApp {
   Vec          Uprev; /* U of the last accepted step, to retry from */
   Vec          dU;    /* increment of the last accepted step, for the predictor */
   PetscReal    dlambda_last; /* its load-factor increment; 0 before the first step */
+  PetscReal    ddepth_last;  /* its indenter-depth increment, nm */
+  PetscReal    load_last;    /* load control: the load of the last accepted step, uN */
+  PetscReal    slope_last;   /* load control: its dP/dh, uN/nm (0: unknown) */
+  PetscReal    depth_trial;  /* load control: the depth of the step being tried (-1: from the load program) */
+  PetscBool    defer_commit; /* load control: IndAppSolveStep leaves a converged trial uncommitted */
   IndPredictor predictor;
   IndLoadPath  path;
   PetscBool    quiet;

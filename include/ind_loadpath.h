@@ -14,7 +14,10 @@ typedef struct {
   PetscReal hold;       /* length of the hold segment (0: none) */
   PetscBool unload;     /* whether the program unloads */
   PetscReal t_end;      /* 1 + hold (+ 1 when unloading) */
-  PetscReal depth_max;  /* -load_depth, nm (0: no indenter) */
+  PetscReal depth_max;  /* -load_depth, nm (0: no indenter); under load control the largest depth allowed */
+  PetscReal force_max;  /* -load_force, uN: load control (0: the depth is prescribed) */
+  PetscReal force_rtol; /* load control: |P - P*| <= force_rtol * force_max */
+  PetscReal unload_to;  /* load control: unloading ends at this fraction of force_max (0: at zero load) */
   PetscReal dt;         /* increment of the next attempt */
   PetscReal dt_initial; /* 1 / -load_steps */
   PetscReal dt_unload;  /* 1 / -load_unload_steps: the unloading segment's first increment */

@@ -8,6 +8,7 @@
 #include "ind_signals.h"
 #include "ind_runchecks.h"
 #include "ind_options.h"
+#include "ind_forcesearch.h"
 
 const char *const IndPredictorTypes[] = {"extrapolate", "tangent", "none", "IndPredictor", "IND_PREDICTOR_", NULL};
 
@@ -26,6 +27,7 @@ PetscErrorCode IndAppCreate(MPI_Comm comm, IndApp *out)
   app->checkpoint_every = 10;
   app->stop_after       = -1;
   app->checkpointed     = -1;
+  app->depth_trial      = -1;
   PetscCall(PetscTime(&app->t_start));
   {
     time_t    now = time(NULL);
@@ -64,6 +66,8 @@ PetscErrorCode IndAppCreate(MPI_Comm comm, IndApp *out)
   /* An indentation unloads by default; a run of prescribed displacements only loads. */
   PetscCall(IndLoadPathSetFromOptions(comm, app->contact ? PETSC_TRUE : PETSC_FALSE, &app->path));
   PetscCheck(!app->contact || app->path.depth_max > 0, comm, PETSC_ERR_ARG_WRONG, "-indenter_type needs the largest depth -load_depth (nm) > 0");
+  PetscCheck(app->contact || app->path.force_max == 0, comm, PETSC_ERR_ARG_WRONG,
+    "-load_force needs an indenter: -indenter_type");
   PetscCheck(app->contact || app->path.depth_max == 0, comm, PETSC_ERR_ARG_WRONG, "-load_depth needs an indenter: -indenter_type");
   PetscCall(IndHistoryCreate(app->disc, &app->history));
   PetscCall(IndAssemblyCreate(app->disc, app->mats, app->history, &app->assembly));
@@ -122,6 +126,72 @@ PetscErrorCode IndAppSetStepMonitor(IndApp app, IndStepMonitor fn, void *ctx)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The converged trial state becomes the accepted one. */
+static PetscErrorCode AcceptStep(IndApp app, PetscReal lambda_old, const IndStepResult *r)
+{
+  PetscFunctionBeginUser;
+  PetscCall(IndHistoryCommit(app->history));
+  if (app->contact) {
+    app->ddepth_last = r->depth - app->contact->depth_c;
+    PetscCall(IndContactCommit(app->contact, app->U));
+  }
+  PetscCall(VecWAXPY(app->dU, -1.0, app->Uprev, app->U));
+  app->dlambda_last = r->lambda - lambda_old;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Load control: the depth at which the step's load is P* = lambda(t) -load_force, by the bracketed
+   secant of forcesearch.c, each depth tried from the accepted state; the one found is accepted. */
+static PetscErrorCode SolveLoadStep(IndApp app, PetscReal t, IndStepResult *r)
+{
+  IndLoadPath    *lp         = &app->path;
+  const PetscReal lambda_old = IndLoadPathFactor(lp, lp->t), lambda = IndLoadPathFactor(lp, t);
+  const PetscReal target     = lp->force_max * (IndLoadPathUnloading(lp, t) ? PetscMax(lambda, lp->unload_to) : lambda);
+  const PetscInt  max_depths = 40;
+  IndForceSearch  fs;
+  PetscInt        newton = 0, linear = 0, outer = 0;
+  PetscLogDouble  seconds = 0;
+  int             found = 0;
+
+  PetscFunctionBeginUser;
+  IndForceSearchStart(&fs, target, lp->force_rtol * lp->force_max, lp->depth_max, app->contact->depth_c,
+    app->load_last);
+  app->defer_commit = PETSC_TRUE;
+  for (PetscInt k = 0; k < max_depths && !found; ++k) {
+    app->depth_trial = IndForceSearchNext(&fs, app->slope_last, lp->depth_max * lambda);
+    PetscCall(IndAppSolveStep(app, t, r));
+    newton += r->newton, linear += r->linear, outer += r->outer, seconds += r->seconds;
+    if (!r->converged) break; /* the step is cut back */
+    found = IndForceSearchUpdate(&fs, r->depth, r->contact.load * 1e-3);
+    PetscCheck(found != -1, app->comm, PETSC_ERR_USER_INPUT,
+               "-load_force %g uN is out of reach: at -load_depth %g nm, the largest depth allowed, the load is %g "
+                 "uN; raise -load_depth "
+               "(within the body) or lower -load_force", (double)lp->force_max, (double)lp->depth_max,
+                 (double)(r->contact.load * 1e-3));
+    if (!found) { /* try another depth from the accepted state */
+      PetscCall(VecCopy(app->Uprev, app->U));
+      PetscCall(IndContactRollback(app->contact));
+    }
+  }
+  app->defer_commit = PETSC_FALSE;
+  app->depth_trial  = -1;
+  if (r->converged && !found) {
+    r->converged = PETSC_FALSE;
+    PetscCall(PetscSNPrintf(r->why, sizeof(r->why),
+      "load control: no depth gave %g uN within %g in %" PetscInt_FMT " tries",
+                            (double)target, (double)(lp->force_rtol * lp->force_max), max_depths));
+  }
+  if (found) {
+    const PetscReal load = r->contact.load * 1e-3;
+    const PetscReal dd   = r->depth - app->contact->depth_c;
+    if (dd != 0) app->slope_last = (load - app->load_last) / dd;
+    app->load_last = load;
+    PetscCall(AcceptStep(app, lambda_old, r));
+  }
+  r->newton = newton, r->linear = linear, r->outer = outer, r->seconds = seconds;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode IndAppSolveStep(IndApp app, PetscReal t, IndStepResult *r)
 {
   IndSolver       s          = app->solver;
@@ -133,7 +203,7 @@ PetscErrorCode IndAppSolveStep(IndApp app, PetscReal t, IndStepResult *r)
   PetscCall(PetscMemzero(r, sizeof(*r)));
   r->t      = t;
   r->lambda = IndLoadPathFactor(&app->path, t);
-  r->depth  = app->path.depth_max * r->lambda;
+  r->depth  = app->depth_trial >= 0 ? app->depth_trial : app->path.depth_max * r->lambda;
   PetscCall(PetscTime(&t0));
   PetscCall(PetscLogStagePush(IndLog.solve));
   PetscCall(VecCopy(app->U, app->Uprev));
@@ -144,7 +214,13 @@ PetscErrorCode IndAppSolveStep(IndApp app, PetscReal t, IndStepResult *r)
      response instead (for an indenter alone, the last state). */
   /* Not across a reversal: unloading from a plastic state is nothing like the loading increment
      reversed (that guess made Newton diverge 9 times in a row on a Vickers indentation). */
-  if (app->predictor == IND_PREDICTOR_EXTRAPOLATE && (r->lambda - lambda_old) * app->dlambda_last > 0) PetscCall(VecAXPY(app->U, (r->lambda - lambda_old) / app->dlambda_last, app->dU));
+  /* Under load control the depth drives the step: the increment is scaled by the change of depth. */
+  if (app->depth_trial >= 0) {
+    const PetscReal ratio = app->ddepth_last != 0 ? (r->depth - app->contact->depth_c) / app->ddepth_last : 0;
+    if (app->predictor == IND_PREDICTOR_EXTRAPOLATE && ratio > 0) PetscCall(VecAXPY(app->U, ratio, app->dU));
+    else if (app->predictor != IND_PREDICTOR_NONE) PetscCall(IndSolverPredict(s, lambda_old, r->lambda, app->U));
+  } else if (app->predictor == IND_PREDICTOR_EXTRAPOLATE && (r->lambda - lambda_old) * app->dlambda_last > 0)
+    PetscCall(VecAXPY(app->U, (r->lambda - lambda_old) / app->dlambda_last, app->dU));
   else if (app->predictor != IND_PREDICTOR_NONE) PetscCall(IndSolverPredict(s, lambda_old, r->lambda, app->U));
   PetscCall(IndSolverSolve(s, r->lambda, app->U, &sr));
   r->reason    = sr.reason;
@@ -159,10 +235,7 @@ PetscErrorCode IndAppSolveStep(IndApp app, PetscReal t, IndStepResult *r)
     /* SNES may have evaluated the residual last at a line-search trial point, not at U. */
     PetscCall(IndSolverEvaluate(s, app->U));
     r->plastic = s->nplastic;
-    PetscCall(IndHistoryCommit(app->history));
-    if (app->contact) PetscCall(IndContactCommit(app->contact, app->U));
-    PetscCall(VecWAXPY(app->dU, -1.0, app->Uprev, app->U));
-    app->dlambda_last = r->lambda - lambda_old;
+    if (!app->defer_commit) PetscCall(AcceptStep(app, lambda_old, r));
   } else {
     PetscCall(VecCopy(app->Uprev, app->U));
     if (app->contact) PetscCall(IndContactRollback(app->contact));
@@ -252,7 +325,8 @@ PetscErrorCode IndAppRun(IndApp app)
       break;
     }
 
-    PetscCall(IndAppSolveStep(app, t, &r));
+    if (lp->force_max > 0) PetscCall(SolveLoadStep(app, t, &r));
+    else PetscCall(IndAppSolveStep(app, t, &r));
     if (!r.converged) {
       if (!app->quiet) PetscCall(PetscPrintf(app->comm, "  step to t = %.6f rejected (%s): cutting the increment\n", (double)t, r.why));
       PetscCall(IndLoadPathReject(lp, app->comm, r.why));
@@ -278,6 +352,9 @@ PetscErrorCode IndAppRun(IndApp app)
     if (app->monitor) PetscCall(app->monitor(app, &r, app->monitor_ctx));
     /* Unloading ends once the indenter has left the surface. */
     if (app->contact && IndLoadPathUnloading(lp, t) && r.contact.contact == 0) IndLoadPathFinish(lp);
+    /* Load control may stop unloading at a fraction of the largest load. */
+    if (lp->unload_to > 0 && IndLoadPathUnloading(lp, t) && IndLoadPathFactor(lp,
+      t) <= lp->unload_to) IndLoadPathFinish(lp);
     if (lp->accepted == app->stop_after) IndSignalsRaise(SIGTERM);
     else if (app->checkpoint_every && lp->accepted % app->checkpoint_every == 0 && !IndLoadPathDone(lp))
       PetscCall(Checkpoint(app));

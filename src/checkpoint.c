@@ -212,7 +212,7 @@ static void UnpackPoint(const PetscReal *r, IndCurvePoint *p)
 }
 
 /* The evolving scalars, in a fixed order. */
-#define NSCALARS 11
+#define NSCALARS 14
 static void PackScalars(IndApp app, PetscReal s[NSCALARS])
 {
   const IndLoadPath *lp = &app->path;
@@ -227,6 +227,9 @@ static void PackScalars(IndApp app, PetscReal s[NSCALARS])
   s[8]  = (PetscReal)(app->summary ? app->summary->n : 0);
   s[9]  = (PetscReal)app->output->nsteps;
   s[10] = app->elapsed_before + app->elapsed_now;
+  s[11] = app->ddepth_last;
+  s[12] = app->load_last;
+  s[13] = app->slope_last;
 }
 
 /* U (3 per node), its last increment, and with contact the committed reactions in U's layout. */
@@ -484,6 +487,9 @@ PetscErrorCode IndCheckpointRead(IndApp app, const char path[])
   app->path.cutbacks_in_a_row = (PetscInt)scal[4];
   app->dlambda_last           = scal[5];
   app->elapsed_before         = scal[10];
+  app->ddepth_last            = scal[11];
+  app->load_last              = scal[12];
+  app->slope_last             = scal[13];
   if (app->contact) {
     app->contact->rho_scale = scal[6];
     app->contact->depth_c = app->contact->indenter.depth = scal[7];

@@ -12,9 +12,17 @@ PetscErrorCode IndLoadPathSetFromOptions(MPI_Comm comm, PetscBool unload_default
   lp->max_cutbacks = 10;
   lp->unload       = unload_default;
   lp->unload_growth = 1.2;
+  lp->force_rtol    = 1e-7;
   PetscOptionsBegin(comm, NULL, IND_TITLE "Load program and stepping (-load_*)", "Load");
   PetscCall(IndOptionsReal("-load_depth", "Largest indenter depth, reached at the end of loading", "nm",
     "required with -indenter_type", lp->depth_max, &lp->depth_max, NULL));
+  PetscCall(IndOptionsReal("-load_force", "Load control: the largest load, reached at the end of loading; the depth "
+    "follows (-load_depth is then the largest depth allowed)", "uN", "none: depth control", lp->force_max,
+    &lp->force_max, NULL));
+  PetscCall(IndOptionsReal("-load_force_rtol", "Load control: each step's load within this fraction of -load_force", "",
+    NULL, lp->force_rtol, &lp->force_rtol, NULL));
+  PetscCall(IndOptionsReal("-load_unload_to", "Load control: unloading ends at this fraction of -load_force (0: the "
+    "indenter leaves)", "", NULL, lp->unload_to, &lp->unload_to, NULL));
   PetscCall(IndOptionsReal("-load_hold", "Length of the hold at full load, in units of the loading segment", "", NULL,
     lp->hold, &lp->hold, NULL));
   PetscCall(IndOptionsBool("-load_unload", "Unload after loading (and holding)", lp->unload, &lp->unload, NULL));
@@ -47,6 +55,18 @@ PetscErrorCode IndLoadPathSetFromOptions(MPI_Comm comm, PetscBool unload_default
   PetscCheck(unload_steps >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-load_unload_steps must be >= 1, got %" PetscInt_FMT, unload_steps);
   PetscCheck(lp->hold >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-load_hold must be >= 0, got %g", (double)lp->hold);
   PetscCheck(lp->depth_max >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-load_depth must be >= 0 (nm), got %g", (double)lp->depth_max);
+  PetscCheck(lp->force_max >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-load_force must be >= 0 (uN), got %g",
+    (double)lp->force_max);
+  PetscCheck(lp->force_rtol > 0 && lp->force_rtol < 1, comm, PETSC_ERR_ARG_OUTOFRANGE,
+    "-load_force_rtol must lie in (0, 1), got %g",
+             (double)lp->force_rtol);
+  PetscCheck(lp->unload_to >= 0 && lp->unload_to < 1, comm, PETSC_ERR_ARG_OUTOFRANGE,
+    "-load_unload_to must lie in [0, 1), got %g",
+             (double)lp->unload_to);
+  PetscCheck(lp->force_max > 0 || lp->unload_to == 0, comm, PETSC_ERR_ARG_WRONG,
+    "-load_unload_to needs load control: -load_force");
+  PetscCheck(lp->force_max == 0 || lp->depth_max > 0, comm, PETSC_ERR_ARG_WRONG,
+             "-load_force needs -load_depth > 0 (nm): the largest depth the indenter may reach to carry it");
   lp->t_end = 1.0 + lp->hold + (lp->unload ? 1.0 : 0.0);
   PetscCheck(lp->dt_max > 0 && lp->dt_max <= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-load_max_increment must lie in (0, 1], got %g", (double)lp->dt_max);
   PetscCheck(lp->dt_min > 0 && lp->dt_min <= PetscMin(lp->dt_initial, lp->dt_unload), comm, PETSC_ERR_ARG_OUTOFRANGE, "-load_min_increment must lie in (0, 1/-load_steps = %g] and (0, 1/-load_unload_steps = %g], got %g", (double)lp->dt_initial, (double)lp->dt_unload, (double)lp->dt_min);

@@ -7,12 +7,15 @@
 #include "ind_files.h"
 #include "ind_options.h"
 
-/* Every file a run (and scripts/plot-indent.py after it) puts in its directory: a fresh run in the
-   directory must not leave any of an earlier run's beside its own. */
-static const char *const RunFiles[] = {
-  "indent.h5",   "indent.xdmf",  "indent.xdmf.tmp", "load_displacement.csv", "summary.txt",      "summary.json",
-  "checkpoint.h5", "checkpoint.h5.tmp", "mesh.msh", "mesh.msh.tmp", "mesh.msh.log", "imprint.csv", "imprint.png", "stress_slice.png",
-  "load_displacement.png"};
+/* Every file a run (and scripts/plot-indent.py and export-curves.py after it) puts in its directory: a
+   fresh run in the directory must not leave any of an earlier run's beside its own. */
+static const char *const RunFiles[] = {"indent.h5",          "indent.xdmf",           "indent.xdmf.tmp",
+                                       "load_displacement.csv", "summary.txt",        "summary.json",
+                                       "checkpoint.h5",      "checkpoint.h5.tmp",     "mesh.msh",
+                                       "mesh.msh.tmp",       "mesh.msh.log",          "imprint.csv",
+                                       "imprint.png",        "stress_slice.png",      "load_displacement.png",
+                                       "curve.niget",        "curve_hysitron.txt",    "imprint.xyz",
+                                       "imprint.gsf"};
 #define NRUNFILES ((int)(sizeof(RunFiles) / sizeof(RunFiles[0])))
 
 PetscErrorCode IndRenameInto(const char tmp[], const char path[])
@@ -103,8 +106,8 @@ PetscErrorCode IndRunDirSetUp(MPI_Comm comm, PetscBool writes, IndRunDir *rd)
   PetscCall(PetscMemzero(rd, sizeof(*rd)));
   PetscCall(PetscStrncpy(rd->dir, "output", sizeof(rd->dir)));
   PetscOptionsBegin(comm, NULL, IND_TITLE "Output directory and restart", "Output");
-  PetscCall(IndOptionsString("-output_dir", "Directory of the run's files (created if missing)", "dir", NULL, rd->dir, rd->dir,
-                             sizeof(rd->dir), NULL));
+  PetscCall(IndOptionsString("-output_dir", "Directory of the run's files (created if missing)", "dir", NULL, rd->dir,
+                             rd->dir, sizeof(rd->dir), NULL));
   PetscCall(IndOptionsBool("-output_overwrite", "Replace the files of an earlier run in -output_dir", rd->overwrite,
                            &rd->overwrite, NULL));
   PetscCall(IndOptionsString("-restart", "Continue from a checkpoint: its file, or the directory holding checkpoint.h5",
