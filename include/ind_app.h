@@ -65,6 +65,7 @@ struct _p_IndApp {
   void          *monitor_ctx;
   IndRunDir      rundir;
   PetscInt       checkpoint_every; /* accepted steps between checkpoints (0: only on a signal) */
+  PetscInt       csm_every;        /* -csm_every: the unloading stiffness every N accepted loading steps (0: never) */
   PetscInt       stop_after;       /* -checkpoint_stop_after_step: act as if SIGTERM came after it (tests) */
   PetscInt       checkpointed;     /* the accepted step of the last checkpoint written (-1: none) */
   int            stopped;          /* the signal that stopped the run after its checkpoint (0: none) */

@@ -6,7 +6,9 @@ load and the plastic strain at the last step (after unloading, for a complete ru
   /usr/bin/python3 scripts/plot-indent.py RUN_DIR [--out DIR]
 
 Reads RUN_DIR/load_displacement.csv and RUN_DIR/indent.h5 and writes into DIR (default RUN_DIR):
-load_displacement.png, imprint.csv, imprint.png, stress_slice.png. Half (y >= 0) and quarter
+load_displacement.png, imprint.csv, imprint.png, stress_slice.png, and with RUN_DIR/csm.csv (-csm_every)
+csm.png: H and E_r against depth (against h/t with --film-thickness t), with the reduced moduli of the
+film and the substrate drawn when the run's summary.json names them. Half (y >= 0) and quarter
 (x, y >= 0) models are mirrored for the pictures. Exit status 2 on bad input.
 """
 import argparse
@@ -156,6 +158,40 @@ def plot_load_displacement(curve, path):
     ax.set_ylim(bottom=0)
     ax.grid(alpha=0.3)
     ax.legend()
+    save(fig, path)
+
+
+def option_value(options, name):
+    """The value of -name in the options string of summary.json, or None."""
+    words = options.split()
+    return words[words.index(name) + 1] if name in words[:-1] else None
+
+
+def plot_csm(run_dir, thickness, path):
+    """H and E_r against depth from the unloading stiffness (csm.csv), with E* of film and substrate."""
+    c = np.atleast_1d(np.genfromtxt(os.path.join(run_dir, "csm.csv"), delimiter=",", names=True))
+    x = c["depth_nm"] / thickness if thickness else c["depth_nm"]
+    fig, (ax_h, ax_e) = plt.subplots(1, 2, figsize=(10, 4.2))
+    ax_h.plot(x, c["H_GPa"], "o-", color="tab:blue", ms=4)
+    ax_e.plot(x, c["E_r_GPa"], "o-", color="tab:red", ms=4, label="E_r from S")
+    summary = os.path.join(run_dir, "summary.json")
+    if os.path.exists(summary):
+        import json
+        options = json.load(open(summary)).get("options", "")
+        for region, style in (("film", "--"), ("substrate", ":")):
+            young, nu = option_value(options, f"-{region}_young"), option_value(options, f"-{region}_poisson")
+            if young and nu:
+                estar = float(young) / (1 - float(nu) ** 2)
+                ax_e.axhline(estar, ls=style, color="0.4", label=f"{region}: E/(1-nu^2) = {estar:.4g} GPa")
+    xlabel = "h / t" if thickness else "depth h (nm)"
+    for ax, label in ((ax_h, "hardness H (GPa)"), (ax_e, "reduced modulus E_r (GPa)")):
+        ax.set_xlabel(xlabel)
+        ax.set_ylabel(label)
+        ax.set_xlim(left=0)
+        ax.set_ylim(bottom=0)
+        ax.grid(alpha=0.3)
+    ax_e.legend(fontsize=8)
+    fig.suptitle("from the unloading stiffness at each depth (-csm_every)")
     save(fig, path)
 
 
@@ -341,6 +377,7 @@ def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("run_dir", help="output directory of an indent run")
     ap.add_argument("--out", help="directory for the pictures and imprint.csv (default RUN_DIR)")
+    ap.add_argument("--film-thickness", type=float, help="film thickness t (nm): csm.png against h / t")
     args = ap.parse_args(argv)
     try:
         curve, run = load_inputs(args.run_dir)
@@ -353,6 +390,8 @@ def main(argv=None):
         plot_load_displacement(curve, os.path.join(out, "load_displacement.png"))
         imprint(run, curve, out)
         plot_stress_slice(run, curve, os.path.join(out, "stress_slice.png"))
+    if os.path.exists(os.path.join(args.run_dir, "csm.csv")):
+        plot_csm(args.run_dir, args.film_thickness, os.path.join(out, "csm.png"))
     return 0
 
 

@@ -9,6 +9,7 @@
 #include "ind_runchecks.h"
 #include "ind_options.h"
 #include "ind_forcesearch.h"
+#include "ind_csm.h"
 
 const char *const IndPredictorTypes[] = {"extrapolate", "tangent", "none", "IndPredictor", "IND_PREDICTOR_", NULL};
 
@@ -43,7 +44,12 @@ PetscErrorCode IndAppCreate(MPI_Comm comm, IndApp *out)
                           NULL, app->checkpoint_every, &app->checkpoint_every, NULL));
   PetscCall(IndOptionsInt("-checkpoint_stop_after_step", "Stop with a checkpoint after this accepted step, as on SIGTERM (for tests)",
                           "-1: never", app->stop_after, &app->stop_after, NULL));
+  PetscCall(IndOptionsInt("-csm_every", "Hardness and modulus against depth: the contact stiffness of a small elastic "
+                          "unloading every N accepted loading steps, into <output_dir>/csm.csv (0: never)", NULL,
+                          app->csm_every, &app->csm_every, NULL));
   PetscOptionsEnd();
+  PetscCheck(app->csm_every >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-csm_every must be >= 0 (steps), got %" PetscInt_FMT,
+             app->csm_every);
   PetscCheck(app->checkpoint_every >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-checkpoint_every must be >= 0 (steps), got %" PetscInt_FMT, app->checkpoint_every);
   {
@@ -87,6 +93,7 @@ PetscErrorCode IndAppCreate(MPI_Comm comm, IndApp *out)
   if (app->rundir.restart) {
     IndSummary sum = app->summary;
     PetscCall(IndCheckpointRead(app, app->rundir.checkpoint));
+    PetscCall(IndCSMTruncate(comm, app->rundir.dir, app->path.accepted));
     PetscCall(IndOutputResume(app->output, sum ? sum->n : 0, sum ? sum->pts : NULL));
   }
 
@@ -348,6 +355,17 @@ PetscErrorCode IndAppRun(IndApp app)
       IndCurvePoint p = {lp->accepted, r.t, r.depth, r.contact.load * 1e-3, r.contact.contact, r.contact.stick, r.contact.slip, r.newton, r.outer, r.linear, lp->cutbacks, r.contact.penetration, r.contact.area, r.contact.pileup, r.contact.deepest, r.seconds};
       PetscCall(IndOutputCurvePoint(app->output, &p));
       PetscCall(IndSummaryAddPoint(app->summary, &p));
+    }
+    if (app->csm_every && app->contact && !IndLoadPathUnloading(lp, t) && r.contact.contact > 0 &&
+        lp->accepted % app->csm_every == 0) {
+      IndCSMPoint csm;
+      PetscCall(IndCSMStiffness(app, r.depth, r.contact.load * 1e-3, r.contact.area, &csm));
+      if (app->rundir.ready) PetscCall(IndCSMWrite(app->comm, app->rundir.dir, lp->accepted, r.depth,
+        r.contact.load * 1e-3, &csm));
+      if (!app->quiet)
+        PetscCall(PetscPrintf(app->comm, "  stiffness S %.6g uN/nm, h_c %.5g nm, H %.5g GPa, E_r %.5g GPa\n",
+          (double)csm.S,
+                              (double)csm.h_c, (double)csm.H, (double)csm.E_r));
     }
     if (app->monitor) PetscCall(app->monitor(app, &r, app->monitor_ctx));
     /* Unloading ends once the indenter has left the surface. */

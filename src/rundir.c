@@ -15,7 +15,7 @@ static const char *const RunFiles[] = {"indent.h5",          "indent.xdmf",     
                                        "mesh.msh.tmp",       "mesh.msh.log",          "imprint.csv",
                                        "imprint.png",        "stress_slice.png",      "load_displacement.png",
                                        "curve.niget",        "curve_hysitron.txt",    "imprint.xyz",
-                                       "imprint.gsf"};
+                                       "imprint.gsf",        "csm.csv",               "csm.csv.tmp"};
 #define NRUNFILES ((int)(sizeof(RunFiles) / sizeof(RunFiles[0])))
 
 PetscErrorCode IndRenameInto(const char tmp[], const char path[])
