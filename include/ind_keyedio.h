@@ -5,6 +5,7 @@
 #include <petscdmplex.h>
 #include <petscviewerhdf5.h>
 #include "ind_keyjoin.h"
+#include "ind_disc.h"
 
 /* The centroid of point p's vertices in the undeformed mesh (its key). */
 PetscErrorCode IndPointCentroid(DM dm, PetscInt p, PetscReal c[3]);
@@ -12,6 +13,14 @@ PetscErrorCode IndPointCentroid(DM dm, PetscInt p, PetscReal c[3]);
 PetscErrorCode IndRowsWrite(PetscViewer viewer, const char name[], PetscInt n, PetscInt bs, const PetscReal *rows);
 /* Collective: dataset name of the current group into a new vector of block size bs, laid out by PETSc. */
 PetscErrorCode IndRowsRead(PetscViewer viewer, const char name[], PetscInt bs, Vec *x);
+/* The keys of this rank's cells (their centroids), allocated (PetscFree). */
+PetscErrorCode IndCellCentroids(IndDisc disc, PetscReal **keys);
+/* Collective: for each of the n keys mine, the bs values that dataset values (NULL: the row number)
+   holds beside it in the file's key dataset keys (both in the current group); an error naming what
+   and file (as the message should name it, e.g. "-restart: checkpoint 'x.h5'") when a key is missing
+   or the counts differ (the file is of another mesh). */
+PetscErrorCode IndRowsJoin(PetscViewer viewer, const char keys[], const char values[], PetscInt bs, const char what[],
+                           const char file[], PetscInt n, const PetscReal *mine, PetscReal *out);
 /* Collective: the row of the file's key dataset (current group) holding each of the n keys; an error
    (naming what and file) when a key is missing or the counts differ. index is allocated (PetscFree). */
 PetscErrorCode IndRowsLocate(PetscViewer viewer, const char keys[], const char what[], const char file[], PetscInt n,

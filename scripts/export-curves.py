@@ -34,20 +34,14 @@ import sys
 import h5py
 import numpy as np
 
+from runfiles import CELL_FACES, InputError, mirror, plane_faces  # this script's folder
+
 CSV_NAME, SUMMARY_NAME, H5_NAME = "load_displacement.csv", "summary.json", "indent.h5"
 # Steps end exactly on the load program's segment ends (src/loadpath.c); the CSV prints t with 10
 # significant digits, so this separates an end from the next step (at least 1/1024 of a segment away).
 T_TOL = 1e-8
 # Vertices on a plane of the mesh are exact up to round-off: relative to the model size.
 REL_TOL = 1e-9
-CELL_FACES = {  # local faces as cyclic vertex lists (VTK order for the hexahedron)
-    4: [(1, 2, 3), (0, 2, 3), (0, 1, 3), (0, 1, 2)],
-    8: [(0, 1, 2, 3), (4, 5, 6, 7), (0, 1, 5, 4), (1, 2, 6, 5), (2, 3, 7, 6), (3, 0, 4, 7)],
-}
-
-
-class InputError(Exception):
-    """A missing or malformed input: one line, exit status 2."""
 
 
 # ----------------------------------------------------------------------------------------- inputs
@@ -161,11 +155,7 @@ def top_surface(h5, path):
     lo, hi = x.min(axis=0), x.max(axis=0)
     tol = REL_TOL * float(np.max(hi - lo))
     on_top = np.abs(x[:, 2] - hi[2]) <= tol
-    flags = on_top[cells]
-    tris = []
-    for face in CELL_FACES[cells.shape[1]]:
-        v = cells[flags[:, face].all(axis=1)][:, face]
-        tris += [v[:, [0, k, k + 1]] for k in range(1, len(face) - 1)]
+    tris, _ = plane_faces(cells, on_top)
     verts = np.flatnonzero(on_top)
     local = np.full(len(x), -1)
     local[verts] = np.arange(len(verts))
@@ -173,19 +163,7 @@ def top_surface(h5, path):
     height = x[verts, 2] + u[verts, 2] - hi[2]
     # A symmetry plane x = 0 or y = 0 bounds the model with the body on its positive side.
     axes = [a for a in (0, 1) if abs(lo[a]) <= tol and hi[a] > tol]
-    return xy, height, local[np.concatenate(tris)], axes, tol
-
-
-def mirror(xy, height, tris, axes, tol):
-    """Reflection across x = 0 and/or y = 0; points on a mirror line are shared, not doubled."""
-    for a in axes:
-        on_line = np.abs(xy[:, a]) <= tol
-        image = np.where(on_line, np.arange(len(xy)), len(xy) + np.cumsum(~on_line) - 1)
-        flipped = xy[~on_line].copy()
-        flipped[:, a] *= -1
-        tris = np.vstack([tris, image[tris][:, ::-1]])
-        xy, height = np.vstack([xy, flipped]), np.r_[height, height[~on_line]]
-    return xy, height, tris
+    return xy, height, local[tris], axes, tol
 
 
 def write_xyz(path, xy, height):
@@ -273,7 +251,8 @@ def main(argv=None):
             options, start_time = run_options(args.run_dir, h5)
             xy, height, tris, axes, tol = top_surface(h5, h5_path)
         hold = option_value(options, "-load_hold", 0.0)
-        xy, height, tris = mirror(xy, height, tris, axes, tol)
+        xy, tris, source, _ = mirror(xy, tris, axes, tol)
+        height = height[source]
         reach = float(min(np.abs(xy[:, 0]).max(), np.abs(xy[:, 1]).max()))
         if args.gsf_half_width is not None:
             half = args.gsf_half_width

@@ -311,12 +311,10 @@ PetscErrorCode IndAssemblyCountInverted(IndAssembly a, Vec Uloc, PetscInt *ncell
     PetscBool inverted = PETSC_FALSE;
     GatherCell(disc, i, u, a->ue);
     for (PetscInt q = 0; q < nq; ++q) {
-      PetscReal F[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1}, J;
+      PetscReal H[9], F[9], J;
       IndDiscGradients(disc, i, q, a->G);
-      for (PetscInt b = 0; b < nb; ++b)
-        for (int r = 0; r < 3; ++r)
-          for (int c = 0; c < 3; ++c) F[3 * r + c] += a->ue[3 * b + r] * a->G[3 * b + c];
-      J = F[0] * (F[4] * F[8] - F[5] * F[7]) - F[1] * (F[3] * F[8] - F[5] * F[6]) + F[2] * (F[3] * F[7] - F[4] * F[6]);
+      IndDeformationGradient(nb, a->G, a->ue, H, F);
+      J = IndDet3(F);
       *jmin = PetscMin(*jmin, J);
       if (!(J > 0)) inverted = PETSC_TRUE;
     }

@@ -5,17 +5,6 @@
 #include "assembly_impl.h"
 #include "ind_logstrain.h"
 
-/* The displacement gradient H = sum_a u_a (x) G_a and F = I + H, row-major. */
-static inline void DeformationGradient(PetscInt nb, const PetscReal *G, const PetscReal *u, PetscReal H[9],
-                                       PetscReal F[9])
-{
-  for (int k = 0; k < 9; ++k) H[k] = 0.0;
-  for (PetscInt a = 0; a < nb; ++a)
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) H[3 * i + j] += u[3 * a + i] * G[3 * a + j];
-  for (int k = 0; k < 9; ++k) F[k] = H[k] + (k % 4 == 0 ? 1.0 : 0.0);
-}
-
 /* The material point: the small-strain response at the Hencky strain, mapped to S (and DS). An
    inverted point (det F <= 0) fails like a return map that does not converge: the step is cut. */
 static inline IndPlasticStatus FinitePoint(const IndMaterial *m, IndTangent tangent, const PetscReal H[9],
@@ -42,7 +31,7 @@ IndPlasticStatus IndFinitePointStress(const IndMaterial *m, IndTangent tangent, 
   PetscReal        H[9], F[9], S[6];
   IndPlasticStatus status;
 
-  DeformationGradient(nb, G, ue, H, F);
+  IndDeformationGradient(nb, G, ue, H, F);
   status = FinitePoint(m, tangent, H, old, trial, S, NULL, dp);
   if (status != IND_PLASTIC_OK) return status;
   /* P = F S = S + H S, summed so that small strains keep their digits */
@@ -111,7 +100,7 @@ IndPlasticStatus IndFinitePointStiffness(const IndMaterial *m, IndTangent tangen
   PetscReal        H[9], F[9], S[6], DS[36], dp;
   IndPlasticStatus status;
 
-  DeformationGradient(nb, G, ue, H, F);
+  IndDeformationGradient(nb, G, ue, H, F);
   status = FinitePoint(m, tangent, H, old, NULL, S, DS, &dp);
   if (status == IND_PLASTIC_OK) AddFiniteStiffness(nb, G, F, S, DS, w, B, DB, Ke);
   return status;
@@ -127,7 +116,7 @@ void IndAssemblyFinitePointFields(IndAssembly a, PetscInt i, PetscInt q, const P
   PetscReal              H[9], F[9], E[6], ee[6], T[6], S[6];
 
   IndDiscGradients(disc, i, q, a->G);
-  DeformationGradient(disc->nb, a->G, a->ue, H, F);
+  IndDeformationGradient(disc->nb, a->G, a->ue, H, F);
   *w = disc->wdetJ[i * disc->nq + q];
   if (IndLogStrainFromGradient(H, &ls, E)) { /* a committed state is never inverted; report it, not hide it */
     for (int k = 0; k < 6; ++k) sigma[k] = e[k] = NAN;

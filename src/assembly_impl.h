@@ -32,6 +32,23 @@ static inline IndPlasticStatus MaterialResponse(const IndMaterial *m, IndTangent
   return status;
 }
 
+/* The displacement gradient H = sum_a u_a (x) G_a and F = I + H, row-major (finite strain, and the
+   check for inverted cells). */
+static inline void IndDeformationGradient(PetscInt nb, const PetscReal *G, const PetscReal *u, PetscReal H[9],
+                                          PetscReal F[9])
+{
+  for (int k = 0; k < 9; ++k) H[k] = 0.0;
+  for (PetscInt a = 0; a < nb; ++a)
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) H[3 * i + j] += u[3 * a + i] * G[3 * a + j];
+  for (int k = 0; k < 9; ++k) F[k] = H[k] + (k % 4 == 0 ? 1.0 : 0.0);
+}
+
+static inline PetscReal IndDet3(const PetscReal F[9])
+{
+  return F[0] * (F[4] * F[8] - F[5] * F[7]) - F[1] * (F[3] * F[8] - F[5] * F[6]) + F[2] * (F[3] * F[7] - F[4] * F[6]);
+}
+
 /* Finite strain at one quadrature point (assembly_finite.c), from the physical gradients G (nb x 3)
    and the cell displacements ue: the first Piola-Kirchhoff stress P (3x3, row-major), writing the
    trial history when trial is not NULL; and Ke += w (B^T dS/dE_GL B + geometric stiffness). */

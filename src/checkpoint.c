@@ -141,14 +141,6 @@ static PetscErrorCode NodesCreate(DM dm, Vec U, Nodes *nd)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode CellKeys(IndDisc disc, PetscReal **keys)
-{
-  PetscFunctionBeginUser;
-  PetscCall(PetscMalloc1(3 * disc->ncell + 1, keys));
-  for (PetscInt i = 0; i < disc->ncell; ++i) PetscCall(IndPointCentroid(disc->dm, disc->cStart + i, *keys + 3 * i));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 /* A short array (the curve, the output steps) written by rank 0 and read whole by every rank. */
 static PetscErrorCode WriteSmall(PetscViewer v, const char name[], PetscInt n, const PetscReal *a)
 {
@@ -312,7 +304,7 @@ PetscErrorCode IndCheckpointWrite(IndApp app, const char path[])
   PetscCall(PetscFree(vals));
   PetscCall(PetscFree2(nd.off, nd.keys));
 
-  PetscCall(CellKeys(app->disc, &ckeys));
+  PetscCall(IndCellCentroids(app->disc, &ckeys));
   PetscCall(VecGetArrayRead(app->history->committed, &hist));
   PetscCall(PetscViewerHDF5PushGroup(v, "/cells"));
   PetscCall(IndRowsWrite(v, "keys", app->disc->ncell, 3, ckeys));
@@ -325,39 +317,6 @@ PetscErrorCode IndCheckpointWrite(IndApp app, const char path[])
   PetscCallMPI(MPI_Barrier(comm));
   if (!rank) PetscCall(IndRenameInto(tmp, path));
   PetscCallMPI(MPI_Barrier(comm));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-/* Joins the file's rows (keys and bs values, in the current group) onto the wanted keys. */
-static PetscErrorCode JoinRows(PetscViewer v, const char dataset[], const char what[], const char path[], PetscInt bs,
-  PetscInt nwant,
-                               const PetscReal *keys, PetscReal *vals)
-{
-  Vec                fk, fv;
-  const PetscScalar *k, *x;
-  PetscInt           nk, nx, missing, duplicate, total = nwant;
-
-  PetscFunctionBeginUser;
-  PetscCall(IndRowsRead(v, "keys", 3, &fk));
-  PetscCall(IndRowsRead(v, dataset, bs, &fv));
-  PetscCall(VecGetLocalSize(fk, &nk));
-  PetscCall(VecGetLocalSize(fv, &nx));
-  PetscCheck(nx == nk / 3 * bs, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED,
-    "Checkpoint '%s': %s keys and values disagree", path, what);
-  PetscCall(VecGetArrayRead(fk, &k));
-  PetscCall(VecGetArrayRead(fv, &x));
-  PetscCall(IndKeyJoin(PetscObjectComm((PetscObject)v), bs, nk / 3, (const PetscReal *)k, (const PetscReal *)x, nwant,
-                       keys, vals, &missing, &duplicate));
-  PetscCall(VecRestoreArrayRead(fk, &k));
-  PetscCall(VecRestoreArrayRead(fv, &x));
-  PetscCall(VecGetSize(fk, &nk));
-  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &total, 1, MPIU_INT, MPI_SUM, PetscObjectComm((PetscObject)v)));
-  PetscCheck(!missing && !duplicate && nk / 3 == total, PetscObjectComm((PetscObject)v), PETSC_ERR_ARG_INCOMP,
-             "-restart: checkpoint '%s' was made on another mesh (%" PetscInt_FMT " %s there, %" PetscInt_FMT " here, "
-             "%" PetscInt_FMT " of these not found)",
-             path, nk / 3, what, total, missing);
-  PetscCall(VecDestroy(&fk));
-  PetscCall(VecDestroy(&fv));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -423,10 +382,11 @@ PetscErrorCode IndCheckpointRead(IndApp app, const char path[])
   Nodes       nd;
   PetscReal  *vals, *ckeys, scal[NSCALARS];
   PetscScalar *hist;
-  char       *start = NULL;
+  char       *start = NULL, what[PETSC_MAX_PATH_LEN + 32];
   PetscInt    stride = 0, npts, nsteps;
 
   PetscFunctionBeginUser;
+  PetscCall(PetscSNPrintf(what, sizeof(what), "-restart: checkpoint '%s'", path));
   PetscCall(PetscViewerHDF5Open(comm, path, FILE_MODE_READ, &v));
   PetscCall(PetscViewerHDF5ReadAttribute(v, "/", "history_stride", PETSC_INT, NULL, &stride));
   PetscCheck(stride == app->history->stride, comm, PETSC_ERR_ARG_INCOMP,
@@ -464,16 +424,16 @@ PetscErrorCode IndCheckpointRead(IndApp app, const char path[])
   PetscCall(NodesCreate(app->disc->dm, app->U, &nd));
   PetscCall(PetscMalloc1(9 * nd.n + 1, &vals));
   PetscCall(PetscViewerHDF5PushGroup(v, "/nodes"));
-  PetscCall(JoinRows(v, "values", "nodes", path, 9, nd.n, nd.keys, vals));
+  PetscCall(IndRowsJoin(v, "keys", "values", 9, "nodes", what, nd.n, nd.keys, vals));
   PetscCall(PetscViewerHDF5PopGroup(v));
   PetscCall(RestoreNodes(app, &nd, vals));
   PetscCall(PetscFree(vals));
   PetscCall(PetscFree2(nd.off, nd.keys));
 
-  PetscCall(CellKeys(app->disc, &ckeys));
+  PetscCall(IndCellCentroids(app->disc, &ckeys));
   PetscCall(VecGetArray(app->history->committed, &hist));
   PetscCall(PetscViewerHDF5PushGroup(v, "/cells"));
-  PetscCall(JoinRows(v, "history", "cells", path, stride, app->disc->ncell, ckeys, (PetscReal *)hist));
+  PetscCall(IndRowsJoin(v, "keys", "history", stride, "cells", what, app->disc->ncell, ckeys, (PetscReal *)hist));
   PetscCall(PetscViewerHDF5PopGroup(v));
   PetscCall(VecRestoreArray(app->history->committed, &hist));
   PetscCall(VecCopy(app->history->committed, app->history->trial));

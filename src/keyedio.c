@@ -47,13 +47,21 @@ PetscErrorCode IndRowsRead(PetscViewer v, const char name[], PetscInt bs, Vec *x
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode IndRowsLocate(PetscViewer v, const char keys[], const char what[], const char file[], PetscInt n,
-                             const PetscReal *mine, PetscInt **index)
+PetscErrorCode IndCellCentroids(IndDisc disc, PetscReal **keys)
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscMalloc1(3 * disc->ncell + 1, keys));
+  for (PetscInt i = 0; i < disc->ncell; ++i) PetscCall(IndPointCentroid(disc->dm, disc->cStart + i, *keys + 3 * i));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode IndRowsJoin(PetscViewer v, const char keys[], const char values[], PetscInt bs, const char what[],
+                           const char file[], PetscInt n, const PetscReal *mine, PetscReal *out)
 {
   MPI_Comm           comm = PetscObjectComm((PetscObject)v);
-  Vec                fk;
-  const PetscScalar *k;
-  PetscReal         *rowid, *found;
+  Vec                fk, fv = NULL;
+  const PetscScalar *k, *x = NULL;
+  PetscReal         *rowid = NULL;
   PetscInt           nk, rstart, missing, duplicate, total = n, nfile;
 
   PetscFunctionBeginUser;
@@ -62,19 +70,42 @@ PetscErrorCode IndRowsLocate(PetscViewer v, const char keys[], const char what[]
   PetscCall(VecGetOwnershipRange(fk, &rstart, NULL));
   PetscCall(VecGetSize(fk, &nfile));
   nk /= 3;
-  PetscCall(PetscMalloc2(nk + 1, &rowid, n + 1, &found));
-  for (PetscInt i = 0; i < nk; ++i) rowid[i] = (PetscReal)(rstart / 3 + i);
+  if (values) {
+    PetscInt nx;
+    PetscCall(IndRowsRead(v, values, bs, &fv));
+    PetscCall(VecGetLocalSize(fv, &nx));
+    PetscCheck(nx == nk * bs, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "%s: the %s' keys and values disagree", file,
+               what);
+    PetscCall(VecGetArrayRead(fv, &x));
+  } else { /* the row of each key */
+    PetscCall(PetscMalloc1(nk + 1, &rowid));
+    for (PetscInt i = 0; i < nk; ++i) rowid[i] = (PetscReal)(rstart / 3 + i);
+  }
   PetscCall(VecGetArrayRead(fk, &k));
-  PetscCall(IndKeyJoin(comm, 1, nk, (const PetscReal *)k, rowid, n, mine, found, &missing, &duplicate));
+  PetscCall(IndKeyJoin(comm, bs, nk, (const PetscReal *)k, values ? (const PetscReal *)x : rowid, n, mine, out,
+                       &missing, &duplicate));
   PetscCall(VecRestoreArrayRead(fk, &k));
+  if (fv) PetscCall(VecRestoreArrayRead(fv, &x));
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &total, 1, MPIU_INT, MPI_SUM, comm));
   PetscCheck(!missing && !duplicate && nfile / 3 == total, comm, PETSC_ERR_ARG_INCOMP,
-             "'%s' was made on another mesh (%" PetscInt_FMT " %s there, %" PetscInt_FMT " here, %" PetscInt_FMT " of "
-               "these not found)", file,
-             nfile / 3, what, total, missing);
+             "%s was made on another mesh (%" PetscInt_FMT " %s there, %" PetscInt_FMT " here, %" PetscInt_FMT
+             " of these not found)", file, nfile / 3, what, total, missing);
+  PetscCall(PetscFree(rowid));
+  PetscCall(VecDestroy(&fv));
+  PetscCall(VecDestroy(&fk));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode IndRowsLocate(PetscViewer v, const char keys[], const char what[], const char file[], PetscInt n,
+                             const PetscReal *mine, PetscInt **index)
+{
+  PetscReal *found;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscMalloc1(n + 1, &found));
+  PetscCall(IndRowsJoin(v, keys, NULL, 1, what, file, n, mine, found));
   PetscCall(PetscMalloc1(n + 1, index));
   for (PetscInt i = 0; i < n; ++i) (*index)[i] = (PetscInt)found[i];
-  PetscCall(PetscFree2(rowid, found));
-  PetscCall(VecDestroy(&fk));
+  PetscCall(PetscFree(found));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -340,8 +340,10 @@ PetscErrorCode IndOptionsStringArray_Private(PetscOptionItems *po, const char op
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode IndOptionsRealArray_Private(PetscOptionItems *po, const char opt[], const char text[], const char what[],
-  const char dflt[], PetscReal values[], PetscInt *n, PetscBool *set)
+/* The part the real and integer lists share: each entry checked, and the -help line with the current
+   values as default. */
+static PetscErrorCode CheckAndListArray(PetscOptionItems *po, const char opt[], const char text[], const char what[],
+                                        const char dflt[], const PetscReal *reals, const PetscInt *ints, PetscInt n)
 {
   char      str[1024], name[256], def[256] = "";
   PetscBool given;
@@ -349,14 +351,23 @@ PetscErrorCode IndOptionsRealArray_Private(PetscOptionItems *po, const char opt[
   PetscFunctionBeginUser;
   FullName(po, opt, name, sizeof(name));
   PetscCall(Raw(po, opt, str, sizeof(str), &given));
-  if (given) PetscCall(CheckList(po->comm, name, str, what, PETSC_FALSE, *n));
+  if (given) PetscCall(CheckList(po->comm, name, str, what, ints ? PETSC_TRUE : PETSC_FALSE, n));
   if (Listing(po)) {
-    for (PetscInt k = 0; k < *n; ++k) {
+    for (PetscInt k = 0; k < n; ++k) {
       size_t l = strlen(def);
-      snprintf(def + l, sizeof(def) - l, "%s%g", k ? "," : "", (double)values[k]);
+      if (ints) snprintf(def + l, sizeof(def) - l, "%s%" PetscInt_FMT, k ? "," : "", ints[k]);
+      else snprintf(def + l, sizeof(def) - l, "%s%g", k ? "," : "", (double)reals[k]);
     }
     PetscCall(HelpLine(po, opt, what, text, dflt ? dflt : def, given, str));
   }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode IndOptionsRealArray_Private(PetscOptionItems *po, const char opt[], const char text[], const char what[],
+  const char dflt[], PetscReal values[], PetscInt *n, PetscBool *set)
+{
+  PetscFunctionBeginUser;
+  PetscCall(CheckAndListArray(po, opt, text, what, dflt, values, NULL, *n));
   WithoutHelp(po, PetscOptionsRealArray_Private(po, opt, text, "", values, n, set));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -364,20 +375,8 @@ PetscErrorCode IndOptionsRealArray_Private(PetscOptionItems *po, const char opt[
 PetscErrorCode IndOptionsIntArray_Private(PetscOptionItems *po, const char opt[], const char text[], const char what[],
   const char dflt[], PetscInt values[], PetscInt *n, PetscBool *set)
 {
-  char      str[1024], name[256], def[256] = "";
-  PetscBool given;
-
   PetscFunctionBeginUser;
-  FullName(po, opt, name, sizeof(name));
-  PetscCall(Raw(po, opt, str, sizeof(str), &given));
-  if (given) PetscCall(CheckList(po->comm, name, str, what, PETSC_TRUE, *n));
-  if (Listing(po)) {
-    for (PetscInt k = 0; k < *n; ++k) {
-      size_t l = strlen(def);
-      snprintf(def + l, sizeof(def) - l, "%s%" PetscInt_FMT, k ? "," : "", values[k]);
-    }
-    PetscCall(HelpLine(po, opt, what, text, dflt ? dflt : def, given, str));
-  }
+  PetscCall(CheckAndListArray(po, opt, text, what, dflt, NULL, values, *n));
   WithoutHelp(po, PetscOptionsIntArray_Private(po, opt, text, "", values, n, set));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

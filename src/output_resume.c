@@ -64,9 +64,7 @@ PetscErrorCode IndOutputWriteCellKeys(IndOutput o)
   PetscReal *keys;
 
   PetscFunctionBeginUser;
-  PetscCall(PetscMalloc1(3 * o->disc->ncell + 1, &keys));
-  for (PetscInt i = 0; i < o->disc->ncell; ++i) PetscCall(IndPointCentroid(o->disc->dm, o->disc->cStart + i,
-    keys + 3 * i));
+  PetscCall(IndCellCentroids(o->disc, &keys));
   PetscCall(PetscViewerHDF5PushGroup(o->viewer, "/topology"));
   PetscCall(IndRowsWrite(o->viewer, "cell_centroids", o->disc->ncell, 3, keys));
   PetscCall(PetscViewerHDF5PopGroup(o->viewer));
@@ -82,6 +80,7 @@ PetscErrorCode IndOutputOpenResumed(IndOutput o)
   Vec                X, coords;
   const PetscScalar *x;
   PetscReal         *vkeys, *ckeys;
+  char               file[PETSC_MAX_PATH_LEN + 2];
   PetscInt           vStart, vEnd, n;
   struct _n_IndOutputPerm *pm;
 
@@ -120,15 +119,15 @@ PetscErrorCode IndOutputOpenResumed(IndOutput o)
   PetscCall(VecRestoreArrayRead(coords, &x));
   PetscCall(VecDestroy(&coords));
   PetscCall(PetscViewerHDF5PushGroup(o->viewer, "/geometry"));
-  PetscCall(IndRowsLocate(o->viewer, "vertices", "vertices", o->h5name, pm->n[0], vkeys, &pm->index[0]));
+  PetscCall(PetscSNPrintf(file, sizeof(file), "'%s'", o->h5name));
+  PetscCall(IndRowsLocate(o->viewer, "vertices", "vertices", file, pm->n[0], vkeys, &pm->index[0]));
   PetscCall(PetscViewerHDF5PopGroup(o->viewer));
   PetscCall(PetscFree(vkeys));
 
   pm->n[1] = o->disc->ncell;
-  PetscCall(PetscMalloc1(3 * pm->n[1] + 1, &ckeys));
-  for (PetscInt i = 0; i < pm->n[1]; ++i) PetscCall(IndPointCentroid(o->disc->dm, o->disc->cStart + i, ckeys + 3 * i));
+  PetscCall(IndCellCentroids(o->disc, &ckeys));
   PetscCall(PetscViewerHDF5PushGroup(o->viewer, "/topology"));
-  PetscCall(IndRowsLocate(o->viewer, "cell_centroids", "cells", o->h5name, pm->n[1], ckeys, &pm->index[1]));
+  PetscCall(IndRowsLocate(o->viewer, "cell_centroids", "cells", file, pm->n[1], ckeys, &pm->index[1]));
   PetscCall(PetscViewerHDF5PopGroup(o->viewer));
   PetscCall(PetscFree(ckeys));
   for (int k = 0; k < 2; ++k) {

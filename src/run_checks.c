@@ -1,13 +1,17 @@
+#include <string.h>
 #include "ind_runchecks.h"
+
+static PetscBool HasWarning(const IndWarnings *w, const char key[])
+{
+  for (PetscInt k = 0; k < w->n; ++k)
+    if (!strcmp(w->key[k], key)) return PETSC_TRUE;
+  return PETSC_FALSE;
+}
 
 PetscErrorCode IndWarningsAdd(MPI_Comm comm, IndWarnings *w, const char key[], PetscBool print, const char text[])
 {
   PetscFunctionBeginUser;
-  for (PetscInt k = 0; k < w->n; ++k) {
-    PetscBool same;
-    PetscCall(PetscStrcmp(w->key[k], key, &same));
-    if (same) PetscFunctionReturn(PETSC_SUCCESS);
-  }
+  if (HasWarning(w, key)) PetscFunctionReturn(PETSC_SUCCESS);
   if (w->n < IND_MAX_WARNINGS) {
     PetscCall(PetscStrncpy(w->key[w->n], key, sizeof(w->key[0])));
     PetscCall(PetscStrncpy(w->text[w->n], text, sizeof(w->text[0])));
@@ -98,7 +102,11 @@ PetscErrorCode IndRunCheckStep(IndApp app, const IndStepResult *r, IndWarnings *
     if (text[0]) PetscCall(IndWarningsAdd(app->comm, w, "contact_edge", print, text));
     PetscCall(PetscSNPrintf(label, sizeof(label), "at depth %.6g nm", (double)r->depth));
   } else PetscCall(PetscSNPrintf(label, sizeof(label), "at load factor %.6g", (double)r->lambda));
-  PetscCall(IndRunCheckInverted(app, label, text, sizeof(text)));
-  if (text[0]) PetscCall(IndWarningsAdd(app->comm, w, "inverted_cells", print, text));
+  /* At finite strain an inverted point fails the step, so an accepted state has none; a warning once
+     given is not given again, so the pass over every quadrature point is spared after it. */
+  if (app->assembly->formulation == IND_FORMULATION_SMALL && !HasWarning(w, "inverted_cells")) {
+    PetscCall(IndRunCheckInverted(app, label, text, sizeof(text)));
+    if (text[0]) PetscCall(IndWarningsAdd(app->comm, w, "inverted_cells", print, text));
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -10,7 +10,6 @@ with -restart gives the same curve.
 """
 import os
 import shutil
-import subprocess
 import sys
 
 import numpy as np
@@ -70,20 +69,11 @@ def main():
         failed += rel > tol
     if args.restart_after:
         part = os.path.join(args.workdir, "restarted")
-        cmd = [args.mpiexec, "-n", str(args.np), args.indent, *lc_opts, "-checkpoint_stop_after_step",
-               str(args.restart_after), "-output_dir", part, "-output_overwrite"]
-        proc = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-        indentrun.pass_on_unfreed(proc.stdout)
-        if proc.returncode != 75:
-            print(proc.stdout)
-            print(f"FAIL: the stopped run exited with {proc.returncode}, not 75")
+        stop = ["-checkpoint_stop_after_step", str(args.restart_after), "-output_dir", part, "-output_overwrite"]
+        if not indentrun.run_expecting(args, args.np, lc_opts + stop, 75, "the stopped run"):
             return 1
-        cmd = [args.mpiexec, "-n", str(args.np), args.indent, *lc_opts, "-output_dir", part, "-restart", part]
-        proc = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-        indentrun.pass_on_unfreed(proc.stdout)
-        if proc.returncode != 0:
-            print(proc.stdout)
-            print(f"FAIL: the restarted run exited with {proc.returncode}")
+        again = ["-output_dir", part, "-restart", part]
+        if not indentrun.run_expecting(args, args.np, lc_opts + again, 0, "the restarted run"):
             return 1
         r = curve(part)
         same = len(r) == len(c)

@@ -40,3 +40,16 @@ def run(args, nranks, options, out, label):
         print(f"FAIL: {label} exited with {proc.returncode}")
         return False
     return True
+
+
+def run_expecting(args, nranks, options, status, label):
+    """Runs indent with options as given (output directory included); False, with its output, unless it
+    exits with status."""
+    cmd = [args.mpiexec, "-n", str(nranks), args.indent, *options]
+    proc = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    pass_on_unfreed(proc.stdout)
+    if proc.returncode != status:
+        print(proc.stdout)
+        print(f"FAIL: {label} exited with {proc.returncode}, not {status}")
+        return False
+    return True
