@@ -13,6 +13,7 @@
 #include "ind_summary.h"
 #include "ind_rundir.h"
 #include "ind_warnings.h"
+#include "ind_scratch.h"
 
 /* How each step's Newton iteration starts: from the last increment extrapolated when there is one
    (else the tangent response), always from the tangent response, or from the prescribed values alone. */
@@ -24,6 +25,7 @@ typedef struct {
   PetscReal           t;         /* pseudo-time of the load program aimed at */
   PetscReal           lambda;    /* its load factor */
   PetscReal           depth;     /* indenter depth, nm (0 without an indenter) */
+  PetscReal           slide;     /* distance the indenter has slid in a scratch test, nm */
   PetscBool           converged; /* accepted: history and contact committed; otherwise nothing changed */
   SNESConvergedReason reason;
   PetscInt            newton, linear, outer;
@@ -54,12 +56,14 @@ struct _p_IndApp {
   Vec          dU;    /* increment of the last accepted step, for the predictor */
   PetscReal    dlambda_last; /* its load-factor increment; 0 before the first step */
   PetscReal    ddepth_last;  /* its indenter-depth increment, nm */
+  PetscReal    dslide_last;  /* its slide (scratch) increment, nm */
   PetscReal    load_last;    /* load control: the load of the last accepted step, uN */
   PetscReal    slope_last;   /* load control: its dP/dh, uN/nm (0: unknown) */
   PetscReal    depth_trial;  /* load control: the depth of the step being tried (-1: from the load program) */
   PetscBool    defer_commit; /* load control: IndAppSolveStep leaves a converged trial uncommitted */
   IndPredictor predictor;
   IndLoadPath  path;
+  IndScratch   scratch;
   PetscBool    quiet;
   IndStepMonitor monitor;
   void          *monitor_ctx;

@@ -30,6 +30,8 @@ typedef struct {
   PetscReal area;                 /* projected area of the contact nodes' tributary faces, nm^2, times symmetry */
   PetscReal pileup;               /* largest height of a contact-surface node above the undeformed surface, nm */
   PetscReal deepest;              /* largest depth of a contact-surface node below it, nm */
+  PetscReal force[3];             /* force of the indenter on the body, nN, with the mirror images: the
+                                     component normal to a symmetry plane through the axis cancels */
 } IndContactSummary;
 
 typedef struct _p_IndContact *IndContact;
@@ -60,6 +62,9 @@ struct _p_IndContact {
   PetscReal  *A;        /* n horizontal tributary areas (projected on z), reference or current */
   PetscInt   *status;   /* n, IndContactStatus of the last update */
   PetscReal   depth_c;  /* indenter depth at the committed state */
+  PetscReal   axis_c[2]; /* indenter axis (x, y) at the committed state: a scratch moves it */
+  PetscInt    mirror;    /* bit c set: a symmetry plane normal to axis c passes through the indenter's axis */
+  PetscReal   extent[4]; /* the contact surface's nodes span x in [extent[0], extent[1]], y in [2], [3], nm */
   PetscBool   areas_current; /* A from the deformed surface at each update (finite strain) */
   PetscBool  *edge;          /* n: the node lies on the edge of the modelled surface (not on a symmetry plane) */
   PetscInt    nedge;         /* such nodes, all ranks */
@@ -104,5 +109,10 @@ PetscErrorCode IndContactUpdate(IndContact contact, Vec U, IndContactSummary *su
    each contact node at U, in the first two components of its node in the global vector G (zero
    elsewhere). */
 PetscErrorCode IndContactNodalFields(IndContact contact, Vec U, Vec G);
+/* The indenter's depth and the position of its axis (x, y, nm) for the step being solved; the slip of
+   a node is taken relative to the indenter's motion since the committed state. */
+PetscErrorCode IndContactSetIndenterPosition(IndContact contact, PetscReal depth, const PetscReal axis[2]);
+/* Whether the symmetry plane of spec passes through the indenter's axis: 0 no, 1 normal x, 2 normal y. */
+int            IndContactPlaneThroughAxis(const IndBCSpec *spec, const IndIndenter *ind);
 PetscErrorCode IndContactCommit(IndContact contact, Vec U);
 PetscErrorCode IndContactRollback(IndContact contact);

@@ -1,7 +1,8 @@
 #pragma once
 /* The load program and its adaptive stepping. A pseudo-time t runs over the program's segments:
-   loading for t in [0, 1], an optional hold of length -load_hold, an optional unloading of length 1;
-   the load factor lambda(t) goes 0 -> 1, stays at 1, goes back to 0. Prescribed displacements are
+   loading for t in [0, 1], an optional hold of length -load_hold, an optional scratch of length 1
+   (the indenter slides, scratch.c), an optional unloading of length 1; the load factor lambda(t) goes
+   0 -> 1, stays at 1 through the hold and the scratch, goes back to 0. Prescribed displacements are
    lambda times their values and the indenter's depth is lambda times -load_depth. A failed step
    (Newton, return map or contact loop) is cut back and retried, an easy one lets the next increment
    grow back; steps end exactly on the segments' ends. Plain data, so the whole stepping state can be
@@ -13,7 +14,8 @@ typedef struct {
   PetscReal t;          /* pseudo-time of the last accepted step */
   PetscReal hold;       /* length of the hold segment (0: none) */
   PetscBool unload;     /* whether the program unloads */
-  PetscReal t_end;      /* 1 + hold (+ 1 when unloading) */
+  PetscReal scratch;    /* length of the scratch segment: 1, or 0 for none */
+  PetscReal t_end;      /* 1 + hold + scratch (+ 1 when unloading) */
   PetscReal depth_max;  /* -load_depth, nm (0: no indenter); under load control the largest depth allowed */
   PetscReal force_max;  /* -load_force, uN: load control (0: the depth is prescribed) */
   PetscReal force_rtol; /* load control: |P - P*| <= force_rtol * force_max */
@@ -21,6 +23,7 @@ typedef struct {
   PetscReal dt;         /* increment of the next attempt */
   PetscReal dt_initial; /* 1 / -load_steps */
   PetscReal dt_unload;  /* 1 / -load_unload_steps: the unloading segment's first increment */
+  PetscReal dt_scratch; /* 1 / -scratch_steps: the scratch segment's increment, and its largest */
   PetscReal unload_growth; /* factor on the increment after each accepted unloading step */
   PetscReal dt_min, dt_max;
   PetscReal cutback; /* dt *= cutback after a failure */
@@ -32,10 +35,16 @@ typedef struct {
 
 /* unload_default: whether the program unloads unless -load_unload says otherwise (an indentation does). */
 PetscErrorCode IndLoadPathSetFromOptions(MPI_Comm comm, PetscBool unload_default, IndLoadPath *path);
+/* Adds the scratch segment, in `steps` equal increments (after SetFromOptions, before any step). */
+void           IndLoadPathSetScratch(IndLoadPath *path, PetscInt steps);
 /* lambda(t) of the program. */
 PetscReal      IndLoadPathFactor(const IndLoadPath *path, PetscReal t);
 /* Whether t lies in the unloading segment. */
 PetscBool      IndLoadPathUnloading(const IndLoadPath *path, PetscReal t);
+/* The fraction of the scratch's length slid at t: 0 before the scratch segment, 1 after it. */
+PetscReal      IndLoadPathScratchFraction(const IndLoadPath *path, PetscReal t);
+/* Whether t lies in the scratch segment. */
+PetscBool      IndLoadPathScratching(const IndLoadPath *path, PetscReal t);
 /* Ends the program now (the indenter has left the surface during unloading). */
 void           IndLoadPathFinish(IndLoadPath *path);
 PetscBool      IndLoadPathDone(const IndLoadPath *path);

@@ -75,6 +75,9 @@ PetscErrorCode IndAppCreate(MPI_Comm comm, IndApp *out)
   PetscCheck(app->contact || app->path.force_max == 0, comm, PETSC_ERR_ARG_WRONG,
     "-load_force needs an indenter: -indenter_type");
   PetscCheck(app->contact || app->path.depth_max == 0, comm, PETSC_ERR_ARG_WRONG, "-load_depth needs an indenter: -indenter_type");
+  PetscCall(IndScratchSetFromOptions(comm, app->contact ? PETSC_TRUE : PETSC_FALSE, &app->scratch));
+  if (app->contact && !IndHelpListing()) PetscCall(IndScratchSetUp(&app->scratch, app->contact, app->bc));
+  if (app->scratch.length > 0) IndLoadPathSetScratch(&app->path, app->scratch.steps);
   PetscCall(IndHistoryCreate(app->disc, &app->history));
   PetscCall(IndAssemblyCreate(app->disc, app->mats, app->history, &app->assembly));
   if (app->contact)
@@ -94,6 +97,7 @@ PetscErrorCode IndAppCreate(MPI_Comm comm, IndApp *out)
     IndSummary sum = app->summary;
     PetscCall(IndCheckpointRead(app, app->rundir.checkpoint));
     PetscCall(IndCSMTruncate(comm, app->rundir.dir, app->path.accepted));
+    PetscCall(IndScratchTruncate(comm, app->rundir.dir, app->path.accepted));
     PetscCall(IndOutputResume(app->output, sum ? sum->n : 0, sum ? sum->pts : NULL));
   }
 
@@ -140,6 +144,7 @@ static PetscErrorCode AcceptStep(IndApp app, PetscReal lambda_old, const IndStep
   PetscCall(IndHistoryCommit(app->history));
   if (app->contact) {
     app->ddepth_last = r->depth - app->contact->depth_c;
+    app->dslide_last = r->slide - app->scratch.length * IndLoadPathScratchFraction(&app->path, app->path.t);
     PetscCall(IndContactCommit(app->contact, app->U));
   }
   PetscCall(VecWAXPY(app->dU, -1.0, app->Uprev, app->U));
@@ -211,18 +216,28 @@ PetscErrorCode IndAppSolveStep(IndApp app, PetscReal t, IndStepResult *r)
   r->t      = t;
   r->lambda = IndLoadPathFactor(&app->path, t);
   r->depth  = app->depth_trial >= 0 ? app->depth_trial : app->path.depth_max * r->lambda;
+  r->slide  = app->scratch.length * IndLoadPathScratchFraction(&app->path, t);
   PetscCall(PetscTime(&t0));
   PetscCall(PetscLogStagePush(IndLog.solve));
   PetscCall(VecCopy(app->U, app->Uprev));
-  if (app->contact) app->contact->indenter.depth = r->depth;
+  if (app->contact) {
+    PetscReal axis[2];
+    IndScratchAxis(&app->scratch, IndLoadPathScratchFraction(&app->path, t), axis);
+    PetscCall(IndContactSetIndenterPosition(app->contact, r->depth, axis));
+  }
   /* The prescribed values alone would strain only the boundary layer of cells, which then yields in
      the first iterate and sends Newton astray; either predictor starts it near the answer. The last
      increment is scaled by the change of load factor; a hold or a reversal takes the tangent
      response instead (for an indenter alone, the last state). */
   /* Not across a reversal: unloading from a plastic state is nothing like the loading increment
      reversed (that guess made Newton diverge 9 times in a row on a Vickers indentation). */
-  /* Under load control the depth drives the step: the increment is scaled by the change of depth. */
-  if (app->depth_trial >= 0) {
+  /* Under load control the depth drives the step: the increment is scaled by the change of depth. A
+     slide drives it in a scratch: the last slide's increment, scaled (at its start, the accepted state). */
+  if (r->slide > app->scratch.length * IndLoadPathScratchFraction(&app->path, app->path.t)) {
+    const PetscReal ds = r->slide - app->scratch.length * IndLoadPathScratchFraction(&app->path, app->path.t);
+    if (app->predictor == IND_PREDICTOR_EXTRAPOLATE && app->dslide_last > 0)
+      PetscCall(VecAXPY(app->U, ds / app->dslide_last, app->dU));
+  } else if (app->depth_trial >= 0) {
     const PetscReal ratio = app->ddepth_last != 0 ? (r->depth - app->contact->depth_c) / app->ddepth_last : 0;
     if (app->predictor == IND_PREDICTOR_EXTRAPOLATE && ratio > 0) PetscCall(VecAXPY(app->U, ratio, app->dU));
     else if (app->predictor != IND_PREDICTOR_NONE) PetscCall(IndSolverPredict(s, lambda_old, r->lambda, app->U));
@@ -356,7 +371,19 @@ PetscErrorCode IndAppRun(IndApp app)
       PetscCall(IndOutputCurvePoint(app->output, &p));
       PetscCall(IndSummaryAddPoint(app->summary, &p));
     }
-    if (app->csm_every && app->contact && !IndLoadPathUnloading(lp, t) && r.contact.contact > 0 &&
+    if (app->scratch.length > 0) {
+      if (app->rundir.ready)
+        PetscCall(IndScratchWrite(app->comm, app->rundir.dir, &app->scratch, lp->accepted, r.t,
+                                  IndLoadPathScratchFraction(lp, r.t), r.depth, &r.contact));
+      if (!app->quiet && IndLoadPathScratching(lp, t)) {
+        PetscReal normal, lateral, side;
+        IndScratchForces(&app->scratch, &r.contact, &normal, &lateral, &side);
+        PetscCall(PetscPrintf(app->comm, "  slid %.5g nm: lateral force %.6g uN, apparent friction %.4f\n",
+                              (double)r.slide, (double)lateral, normal > 0 ? (double)(lateral / normal) : 0.0));
+      }
+    }
+    if (app->csm_every && app->contact && !IndLoadPathUnloading(lp, t) && !IndLoadPathScratching(lp, t) &&
+        r.contact.contact > 0 &&
         lp->accepted % app->csm_every == 0) {
       IndCSMPoint csm;
       PetscCall(IndCSMStiffness(app, r.depth, r.contact.load * 1e-3, r.contact.area, &csm));

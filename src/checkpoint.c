@@ -6,7 +6,7 @@
 #include "ind_rundir.h"
 #include "ind_version.h"
 
-#define FORMAT      "indent checkpoint 1"
+#define FORMAT      "indent checkpoint 2"
 #define CURVE_WIDTH 16 /* reals per IndCurvePoint */
 
 /* Options that do not change the answer, only how it is computed, shown or stored: a restart may
@@ -204,7 +204,7 @@ static void UnpackPoint(const PetscReal *r, IndCurvePoint *p)
 }
 
 /* The evolving scalars, in a fixed order. */
-#define NSCALARS 14
+#define NSCALARS 15
 static void PackScalars(IndApp app, PetscReal s[NSCALARS])
 {
   const IndLoadPath *lp = &app->path;
@@ -222,6 +222,7 @@ static void PackScalars(IndApp app, PetscReal s[NSCALARS])
   s[11] = app->ddepth_last;
   s[12] = app->load_last;
   s[13] = app->slope_last;
+  s[14] = app->dslide_last;
 }
 
 /* U (3 per node), its last increment, and with contact the committed reactions in U's layout. */
@@ -450,9 +451,16 @@ PetscErrorCode IndCheckpointRead(IndApp app, const char path[])
   app->ddepth_last            = scal[11];
   app->load_last              = scal[12];
   app->slope_last             = scal[13];
+  app->dslide_last            = scal[14];
   if (app->contact) {
+    PetscReal axis[2];
+    /* the axis of a scratch follows from the load program's time */
+    IndScratchAxis(&app->scratch, IndLoadPathScratchFraction(&app->path, app->path.t), axis);
     app->contact->rho_scale = scal[6];
-    app->contact->depth_c = app->contact->indenter.depth = scal[7];
+    PetscCall(IndContactSetIndenterPosition(app->contact, scal[7], axis));
+    app->contact->depth_c   = scal[7];
+    app->contact->axis_c[0] = axis[0];
+    app->contact->axis_c[1] = axis[1];
   }
   PetscCall(PetscFree(start));
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -204,18 +204,23 @@ static PetscErrorCode SurfaceNodes(IndMesh mesh, IndDisc disc, const char surfac
 static PetscReal SymmetryFactor(IndBC bc, const IndIndenter *ind)
 {
   PetscReal f = 1;
-  for (PetscInt k = 0; k < bc->nspec; ++k) {
-    PetscBool sym;
-    PetscStrcmp(bc->spec[k].option, "-bc_symmetry", &sym);
-    if (!sym) continue;
-    for (int c = 0; c < 2; ++c)
-      if (bc->spec[k].mask == (1 << c) && PetscAbsReal(bc->spec[k].plane - ind->axis[c]) <= 1e-9 * (1 + PetscAbsReal(ind->axis[c]))) f *= 2;
-  }
+  for (PetscInt k = 0; k < bc->nspec; ++k)
+    if (IndContactPlaneThroughAxis(&bc->spec[k], ind)) f *= 2;
   return f;
 }
 
-/* Whether the symmetry plane of spec k passes through the indenter's axis: 0 no, 1 normal x, 2 normal y. */
-static int PlaneThroughAxis(const IndBCSpec *spec, const IndIndenter *ind)
+/* Bit c set when a symmetry plane normal to axis c passes through the indenter's axis. */
+static PetscInt MirrorPlanes(IndBC bc, const IndIndenter *ind)
+{
+  PetscInt mask = 0;
+  for (PetscInt k = 0; k < bc->nspec; ++k) {
+    const int c = IndContactPlaneThroughAxis(&bc->spec[k], ind);
+    if (c) mask |= 1 << (c - 1);
+  }
+  return mask;
+}
+
+int IndContactPlaneThroughAxis(const IndBCSpec *spec, const IndIndenter *ind)
 {
   PetscBool sym;
   PetscStrcmp(spec->option, "-bc_symmetry", &sym);
@@ -236,9 +241,9 @@ static PetscErrorCode CheckRotation(MPI_Comm comm, IndBC bc, const IndIndenter *
 
   PetscFunctionBeginUser;
   if (!ind->nfaces) PetscFunctionReturn(PETSC_SUCCESS); /* axisymmetric */
-  for (PetscInt k = 0; k < bc->nspec; ++k) planes += PlaneThroughAxis(&bc->spec[k], ind) ? 1 : 0;
+  for (PetscInt k = 0; k < bc->nspec; ++k) planes += IndContactPlaneThroughAxis(&bc->spec[k], ind) ? 1 : 0;
   for (PetscInt k = 0; k < bc->nspec; ++k) {
-    const int       c     = PlaneThroughAxis(&bc->spec[k], ind);
+    const int       c     = IndContactPlaneThroughAxis(&bc->spec[k], ind);
     const PetscReal along = c == 2 ? 0.0 : 90.0;
     const char     *hint;
     PetscReal       r;
@@ -281,7 +286,13 @@ static PetscErrorCode SurfaceEdgeAndSize(IndContact c, IndMesh mesh, IndBC bc)
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &zmin, 1, MPIU_REAL, MPIU_MIN, c->comm));
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &scale, 1, MPIU_REAL, MPIU_MAX, c->comm));
   c->zmin = zmin;
+  c->extent[0] = c->extent[2] = PETSC_MAX_REAL;
+  c->extent[1] = c->extent[3] = -PETSC_MAX_REAL;
   for (PetscInt i = 0; i < c->n; ++i) {
+    for (int d = 0; d < 2; ++d) {
+      c->extent[2 * d]     = PetscMin(c->extent[2 * d], c->X[3 * i + d]);
+      c->extent[2 * d + 1] = PetscMax(c->extent[2 * d + 1], c->X[3 * i + d]);
+    }
     area += c->A[i];
     for (PetscInt k = 0; k < bc->nspec && c->edge[i]; ++k) {
       PetscBool sym;
@@ -291,6 +302,12 @@ static PetscErrorCode SurfaceEdgeAndSize(IndContact c, IndMesh mesh, IndBC bc)
           c->edge[i] = PETSC_FALSE;
     }
     counts[0] += c->edge[i] ? 1 : 0;
+  }
+  {
+    PetscReal lo[2] = {-c->extent[0], -c->extent[2]}, hi[2] = {c->extent[1], c->extent[3]};
+    PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, lo, 2, MPIU_REAL, MPIU_MAX, c->comm));
+    PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, hi, 2, MPIU_REAL, MPIU_MAX, c->comm));
+    c->extent[0] = -lo[0], c->extent[1] = hi[0], c->extent[2] = -lo[1], c->extent[3] = hi[1];
   }
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &area, 1, MPIU_REAL, MPIU_SUM, c->comm));
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, counts, 1, MPIU_INT, MPI_SUM, c->comm));
@@ -439,6 +456,9 @@ PetscErrorCode IndContactCreate(IndMesh mesh, IndDisc disc, IndBC bc, IndContact
   PetscCall(VecDestroy(&G));
   c->indenter = ind;
   c->symmetry = has_sym ? symmetry : SymmetryFactor(bc, &ind);
+  c->mirror   = MirrorPlanes(bc, &ind);
+  c->axis_c[0] = ind.axis[0];
+  c->axis_c[1] = ind.axis[1];
   if (!IndHelpListing()) PetscCall(CheckRotation(comm, bc, &ind, rotation));
   PetscCall(SurfaceEdgeAndSize(c, mesh, bc));
   c->mesh     = mesh;
@@ -590,7 +610,8 @@ static PetscErrorCode CurrentAreas(IndContact c, Vec U)
 PetscErrorCode IndContactUpdate(IndContact c, Vec U, IndContactSummary *sum)
 {
   const PetscScalar *u;
-  PetscReal          red[7] = {0, 0, 0, 0, 0, -PETSC_MAX_REAL, -PETSC_MAX_REAL}; /* |dR|^2, |R|^2, -Fz, area; maxima: penetration, height, depth */
+  /* sums: |dR|^2, |R|^2, -Fz, area, Fx, Fy; maxima: penetration, height, depth */
+  PetscReal          red[9] = {0, 0, 0, 0, 0, 0, -PETSC_MAX_REAL, -PETSC_MAX_REAL, -PETSC_MAX_REAL};
   PetscInt           cnt[3] = {0, 0, 0};
 
   PetscFunctionBeginUser;
@@ -609,16 +630,18 @@ PetscErrorCode IndContactUpdate(IndContact c, Vec U, IndContactSummary *sum)
       c->R[3 * i + d] = ns.f[d];
     }
     red[2] -= ns.f[2];
+    red[4] += ns.f[0];
+    red[5] += ns.f[1];
     c->status[i] = ns.status;
     cnt[ns.status]++;
     if (ns.status != IND_CONTACT_OPEN) red[3] += c->A[i];
-    red[4] = PetscMax(red[4], -ns.gap);
-    red[5] = PetscMax(red[5], c->X[3 * i + 2] + PetscRealPart(u[c->row[i] + 2]) - c->indenter.surface);
-    red[6] = PetscMax(red[6], c->indenter.surface - c->X[3 * i + 2] - PetscRealPart(u[c->row[i] + 2]));
+    red[6] = PetscMax(red[6], -ns.gap);
+    red[7] = PetscMax(red[7], c->X[3 * i + 2] + PetscRealPart(u[c->row[i] + 2]) - c->indenter.surface);
+    red[8] = PetscMax(red[8], c->indenter.surface - c->X[3 * i + 2] - PetscRealPart(u[c->row[i] + 2]));
   }
   PetscCall(VecRestoreArrayRead(U, &u));
-  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, red, 4, MPIU_REAL, MPIU_SUM, c->comm));
-  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, red + 4, 3, MPIU_REAL, MPIU_MAX, c->comm));
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, red, 6, MPIU_REAL, MPIU_SUM, c->comm));
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, red + 6, 3, MPIU_REAL, MPIU_MAX, c->comm));
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, cnt, 3, MPIU_INT, MPI_SUM, c->comm));
   sum->stick       = cnt[IND_CONTACT_STICK];
   sum->slip        = cnt[IND_CONTACT_SLIP];
@@ -632,9 +655,13 @@ PetscErrorCode IndContactUpdate(IndContact c, Vec U, IndContactSummary *sum)
   sum->mismatch    = PetscSqrtReal(red[0]);
   sum->load        = c->symmetry * red[2];
   sum->area        = c->symmetry * red[3];
-  sum->penetration = PetscMax(red[4], 0.0);
-  sum->pileup      = PetscMax(red[5], 0.0);
-  sum->deepest     = PetscMax(red[6], 0.0);
+  sum->penetration = PetscMax(red[6], 0.0);
+  sum->pileup      = PetscMax(red[7], 0.0);
+  sum->deepest     = PetscMax(red[8], 0.0);
+  /* The mirror image doubles the components in a symmetry plane and cancels the one normal to it. */
+  sum->force[0]    = c->mirror & 1 ? 0.0 : c->symmetry * red[4];
+  sum->force[1]    = c->mirror & 2 ? 0.0 : c->symmetry * red[5];
+  sum->force[2]    = -sum->load;
   PetscCall(PetscLogEventEnd(IndLog.contact, 0, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -651,7 +678,9 @@ PetscErrorCode IndContactCommit(IndContact c, Vec U)
       c->Uc[3 * i + d] = PetscRealPart(u[c->row[i] + d]);
     }
   PetscCall(VecRestoreArrayRead(U, &u));
-  c->depth_c = c->indenter.depth;
+  c->depth_c   = c->indenter.depth;
+  c->axis_c[0] = c->indenter.axis[0];
+  c->axis_c[1] = c->indenter.axis[1];
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -659,7 +688,18 @@ PetscErrorCode IndContactRollback(IndContact c)
 {
   PetscFunctionBeginUser;
   PetscCall(PetscArraycpy(c->R, c->Rc, 3 * c->n));
-  c->indenter.depth = c->depth_c;
+  c->indenter.depth   = c->depth_c;
+  c->indenter.axis[0] = c->axis_c[0];
+  c->indenter.axis[1] = c->axis_c[1];
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode IndContactSetIndenterPosition(IndContact c, PetscReal depth, const PetscReal axis[2])
+{
+  PetscFunctionBeginUser;
+  c->indenter.depth   = depth;
+  c->indenter.axis[0] = axis[0];
+  c->indenter.axis[1] = axis[1];
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

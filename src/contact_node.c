@@ -49,8 +49,11 @@ void IndContactNodeSolve(IndContact c, PetscInt i, const PetscScalar *u, const P
     ns->t1[0] = 1, ns->t1[1] = ns->t1[2] = 0;
     ns->t2[1] = 1, ns->t2[0] = ns->t2[2] = 0;
   }
-  /* slip relative to the indenter, which moved down by the change of depth over the step */
+  /* slip relative to the indenter, which moved down by the change of depth over the step and
+     sideways by the change of its axis (a scratch) */
   for (int d = 0; d < 3; ++d) du[d] = PetscRealPart(u[d]) - Uc[d];
+  du[0] -= c->indenter.axis[0] - c->axis_c[0];
+  du[1] -= c->indenter.axis[1] - c->axis_c[1];
   du[2] += c->indenter.depth - c->depth_c;
   dut[0] = du[0] * ns->t1[0] + du[1] * ns->t1[1] + du[2] * ns->t1[2];
   dut[1] = du[0] * ns->t2[0] + du[1] * ns->t2[1] + du[2] * ns->t2[2];

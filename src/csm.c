@@ -1,5 +1,6 @@
 #include <stdio.h>
 #include "ind_csm.h"
+#include "ind_stepcsv.h"
 
 PetscErrorCode IndCSMStiffness(IndApp app, PetscReal h, PetscReal P, PetscReal area_true, IndCSMPoint *pt)
 {
@@ -98,52 +99,24 @@ PetscErrorCode IndCSMStiffness(IndApp app, PetscReal h, PetscReal P, PetscReal a
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-#define CSM_HEADER "step,depth_nm,load_uN,S_uN_per_nm,h_c_nm,A_nm2,H_GPa,E_r_GPa,contact_radius_nm\n"
+#define CSM_HEADER "step,depth_nm,load_uN,S_uN_per_nm,h_c_nm,A_nm2,H_GPa,E_r_GPa,contact_radius_nm"
 
 PetscErrorCode IndCSMWrite(MPI_Comm comm, const char dir[], PetscInt step, PetscReal h, PetscReal P,
   const IndCSMPoint *pt)
 {
-  PetscMPIInt rank;
-  char        path[PETSC_MAX_PATH_LEN];
-  PetscBool   exists;
-  FILE       *fp;
+  char line[512];
 
   PetscFunctionBeginUser;
-  PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  if (rank) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCall(PetscSNPrintf(path, sizeof(path), "%s/csm.csv", dir));
-  PetscCall(PetscTestFile(path, 'r', &exists));
-  fp = fopen(path, "a");
-  PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "Cannot write '%s' (-output_dir)", path);
-  if (!exists) fprintf(fp, CSM_HEADER);
-  fprintf(fp, "%" PetscInt_FMT ",%.12g,%.12g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g\n", step, (double)h, (double)P,
-          (double)pt->S, (double)pt->h_c, (double)pt->A, (double)pt->H, (double)pt->E_r, (double)pt->a);
-  PetscCheck(fclose(fp) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Error writing '%s'", path);
+  PetscCall(PetscSNPrintf(line, sizeof(line), "%" PetscInt_FMT ",%.12g,%.12g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g", step,
+                          (double)h, (double)P, (double)pt->S, (double)pt->h_c, (double)pt->A, (double)pt->H,
+                          (double)pt->E_r, (double)pt->a));
+  PetscCall(IndStepCSVAppend(comm, dir, "csm.csv", CSM_HEADER, line));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 PetscErrorCode IndCSMTruncate(MPI_Comm comm, const char dir[], PetscInt step)
 {
-  PetscMPIInt rank;
-  char        path[PETSC_MAX_PATH_LEN], tmp[PETSC_MAX_PATH_LEN], line[1024];
-  FILE       *in, *out;
-
   PetscFunctionBeginUser;
-  PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  if (rank) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCall(PetscSNPrintf(path, sizeof(path), "%s/csm.csv", dir));
-  in = fopen(path, "r");
-  if (!in) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCall(PetscSNPrintf(tmp, sizeof(tmp), "%s.tmp", path));
-  out = fopen(tmp, "w");
-  PetscCheck(out, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "Cannot write '%s' (-output_dir)", tmp);
-  while (fgets(line, sizeof(line), in)) {
-    long k;
-    if (sscanf(line, "%ld,", &k) == 1 && k > step) continue;
-    fputs(line, out);
-  }
-  fclose(in);
-  PetscCheck(fclose(out) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Error writing '%s'", tmp);
-  PetscCheck(rename(tmp, path) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Cannot rename '%s'", tmp);
+  PetscCall(IndStepCSVTruncate(comm, dir, "csm.csv", step));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

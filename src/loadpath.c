@@ -87,16 +87,36 @@ PetscBool IndLoadPathDone(const IndLoadPath *lp)
   return lp->t >= lp->t_end ? PETSC_TRUE : PETSC_FALSE;
 }
 
+void IndLoadPathSetScratch(IndLoadPath *lp, PetscInt steps)
+{
+  lp->scratch    = 1.0;
+  lp->dt_scratch = 1.0 / PetscMax(steps, 1);
+  lp->dt_min     = PetscMin(lp->dt_min, lp->dt_scratch / 1024);
+  lp->t_end      = 1.0 + lp->hold + lp->scratch + (lp->unload ? 1.0 : 0.0);
+}
+
 PetscReal IndLoadPathFactor(const IndLoadPath *lp, PetscReal t)
 {
+  const PetscReal top = 1.0 + lp->hold + lp->scratch; /* end of the segments at full load */
   if (t <= 1.0) return t;
-  if (t <= 1.0 + lp->hold) return 1.0;
-  return PetscMax(0.0, 1.0 - (t - 1.0 - lp->hold));
+  if (t <= top) return 1.0;
+  return PetscMax(0.0, 1.0 - (t - top));
 }
 
 PetscBool IndLoadPathUnloading(const IndLoadPath *lp, PetscReal t)
 {
-  return lp->unload && t > 1.0 + lp->hold ? PETSC_TRUE : PETSC_FALSE;
+  return lp->unload && t > 1.0 + lp->hold + lp->scratch ? PETSC_TRUE : PETSC_FALSE;
+}
+
+PetscReal IndLoadPathScratchFraction(const IndLoadPath *lp, PetscReal t)
+{
+  if (lp->scratch <= 0) return 0.0;
+  return PetscMin(1.0, PetscMax(0.0, (t - 1.0 - lp->hold) / lp->scratch));
+}
+
+PetscBool IndLoadPathScratching(const IndLoadPath *lp, PetscReal t)
+{
+  return lp->scratch > 0 && t > 1.0 + lp->hold && t <= 1.0 + lp->hold + lp->scratch ? PETSC_TRUE : PETSC_FALSE;
 }
 
 void IndLoadPathFinish(IndLoadPath *lp)
@@ -108,22 +128,29 @@ void IndLoadPathFinish(IndLoadPath *lp)
    just short of it. */
 PetscReal IndLoadPathTarget(const IndLoadPath *lp)
 {
-  const PetscReal ends[3] = {1.0, 1.0 + lp->hold, lp->t_end}, t = lp->t + lp->dt;
-  for (int k = 0; k < 3; ++k)
+  const PetscReal ends[4] = {1.0, 1.0 + lp->hold, 1.0 + lp->hold + lp->scratch, lp->t_end}, t = lp->t + lp->dt;
+  for (int k = 0; k < 4; ++k)
     if (lp->t < ends[k] && t >= ends[k] - IND_LOAD_END_TOL * lp->dt) return ends[k];
   return t;
 }
 
 void IndLoadPathAccept(IndLoadPath *lp, PetscInt its)
 {
+  const PetscReal next = IndLoadPathTarget(lp) + 0.5 * lp->dt_min; /* inside the segment of the next step */
+
   lp->t = IndLoadPathTarget(lp);
   lp->accepted++;
   lp->cutbacks_in_a_row = 0;
-  if (IndLoadPathUnloading(lp, lp->t + 0.5 * lp->dt_min)) {
+  if (IndLoadPathScratching(lp, next)) {
+    /* Sliding: equal steps (the friction's path dependence is followed step by step), cut where
+       they fail and grown back to the scratch's own increment. */
+    if (lp->t <= 1.0 + lp->hold + 0.5 * lp->dt_min) lp->dt = lp->dt_scratch;
+    else if (its <= lp->easy_its) lp->dt = PetscMin(lp->dt * lp->growth, lp->dt_scratch);
+  } else if (IndLoadPathUnloading(lp, next)) {
     /* Unloading: fine steps at the top of the curve, where the load falls fastest and Oliver-Pharr
        fits it, growing geometrically since the curve flattens (whatever Newton needed: the
        contact shrinks as unloading goes on). */
-    if (lp->t <= 1.0 + lp->hold + 0.5 * lp->dt_min) lp->dt = lp->dt_unload;
+    if (lp->t <= 1.0 + lp->hold + lp->scratch + 0.5 * lp->dt_min) lp->dt = lp->dt_unload;
     else lp->dt = PetscMin(lp->dt * lp->unload_growth, PetscMax(lp->dt_max, lp->dt_unload));
   } else if (its <= lp->easy_its) lp->dt = PetscMin(lp->dt * lp->growth, lp->dt_max);
 }

@@ -15,7 +15,10 @@ static const char *const RunFiles[] = {"indent.h5",          "indent.xdmf",     
                                        "mesh.msh.tmp",       "mesh.msh.log",          "imprint.csv",
                                        "imprint.png",        "stress_slice.png",      "load_displacement.png",
                                        "curve.niget",        "curve_hysitron.txt",    "imprint.xyz",
-                                       "imprint.gsf",        "csm.csv",               "csm.csv.tmp"};
+                                       "imprint.gsf",        "csm.csv",               "csm.csv.tmp",
+                                       "csm.png",            "scratch.csv",           "scratch.csv.tmp",
+                                       "scratch.png",        "groove_along.csv",      "groove_across.csv",
+                                       "groove.png"};
 #define NRUNFILES ((int)(sizeof(RunFiles) / sizeof(RunFiles[0])))
 
 PetscErrorCode IndRenameInto(const char tmp[], const char path[])
