@@ -34,14 +34,12 @@ import sys
 import h5py
 import numpy as np
 
-from runfiles import CELL_FACES, InputError, mirror, plane_faces  # this script's folder
+from runfiles import InputError, mirror, top_surface  # this script's folder
 
 CSV_NAME, SUMMARY_NAME, H5_NAME = "load_displacement.csv", "summary.json", "indent.h5"
 # Steps end exactly on the load program's segment ends (src/loadpath.c); the CSV prints t with 10
 # significant digits, so this separates an end from the next step (at least 1/1024 of a segment away).
 T_TOL = 1e-8
-# Vertices on a plane of the mesh are exact up to round-off: relative to the model size.
-REL_TOL = 1e-9
 
 
 # ----------------------------------------------------------------------------------------- inputs
@@ -137,35 +135,6 @@ def write_hysitron(path, curve, seconds_per_t, start_time):
 
 
 # ----------------------------------------------------------------------------------------- imprint
-def dataset(h5, name, path):
-    if name not in h5:
-        raise InputError(f"{path}: dataset /{name} missing")
-    return h5[name]
-
-
-def top_surface(h5, path):
-    """Top-surface vertices of the last step: deformed (x, y), height of the deformed surface above
-    the undeformed one, the triangles of the top faces in local numbers, and the mirror axes."""
-    x = dataset(h5, "geometry/vertices", path)[:]
-    cells = dataset(h5, "topology/cells", path)[:].astype(np.int64)
-    disp = dataset(h5, "fields/displacement", path)
-    if x.ndim != 2 or x.shape[1] != 3 or cells.ndim != 2 or cells.shape[1] not in CELL_FACES or disp.shape[0] == 0:
-        raise InputError(f"{path}: expected vertices (N, 3), cells (C, 4 or 8) and a displacement step")
-    u = disp[disp.shape[0] - 1]
-    lo, hi = x.min(axis=0), x.max(axis=0)
-    tol = REL_TOL * float(np.max(hi - lo))
-    on_top = np.abs(x[:, 2] - hi[2]) <= tol
-    tris, _ = plane_faces(cells, on_top)
-    verts = np.flatnonzero(on_top)
-    local = np.full(len(x), -1)
-    local[verts] = np.arange(len(verts))
-    xy = x[verts, :2] + u[verts, :2]
-    height = x[verts, 2] + u[verts, 2] - hi[2]
-    # A symmetry plane x = 0 or y = 0 bounds the model with the body on its positive side.
-    axes = [a for a in (0, 1) if abs(lo[a]) <= tol and hi[a] > tol]
-    return xy, height, local[tris], axes, tol
-
-
 def write_xyz(path, xy, height):
     order = np.lexsort((xy[:, 1], xy[:, 0]))
     np.savetxt(path, np.column_stack([xy[order], height[order]]), fmt="%.10g", delimiter=" ")

@@ -1,6 +1,9 @@
-"""Shared by the scripts that read an indent run's files (plot-indent.py, export-curves.py): the cells'
-faces, the input error they report in one line, and the triangulation of a plane of the mesh with its
-mirror images (half and quarter models)."""
+"""Shared by the scripts that read an indent run's files (plot-indent.py, export-curves.py,
+groove-profile.py): the cells' faces, the input error they report in one line, the triangulation of a
+plane of the mesh with its mirror images (half and quarter models), the deformed top surface of the last
+step, and the scratch test's table."""
+import csv
+
 import numpy as np
 
 # Local faces of the supported cells as cyclic vertex lists (VTK order for the hexahedron), so that
@@ -9,6 +12,10 @@ CELL_FACES = {
     4: [(1, 2, 3), (0, 2, 3), (0, 1, 3), (0, 1, 2)],
     8: [(0, 1, 2, 3), (4, 5, 6, 7), (0, 1, 5, 4), (1, 2, 6, 5), (2, 3, 7, 6), (3, 0, 4, 7)],
 }
+
+
+# Vertices on a plane of the mesh are exact up to round-off: relative to the model size.
+REL_TOL = 1e-9
 
 
 class InputError(Exception):
@@ -45,3 +52,54 @@ def mirror(points, tris, axes, tol):
         psrc = np.concatenate([psrc, psrc[~on_line]])
         tsrc = np.concatenate([tsrc, tsrc])
     return pts, tr, psrc, tsrc
+
+
+def dataset(h5, name, path):
+    if name not in h5:
+        raise InputError(f"{path}: dataset /{name} missing")
+    return h5[name]
+
+
+def top_surface(h5, path):
+    """Top-surface vertices of the last step: deformed (x, y), height of the deformed surface above
+    the undeformed one, the triangles of the top faces in local numbers, the mirror axes and the
+    tolerance of a plane."""
+    x = dataset(h5, "geometry/vertices", path)[:]
+    cells = dataset(h5, "topology/cells", path)[:].astype(np.int64)
+    disp = dataset(h5, "fields/displacement", path)
+    if x.ndim != 2 or x.shape[1] != 3 or cells.ndim != 2 or cells.shape[1] not in CELL_FACES or disp.shape[0] == 0:
+        raise InputError(f"{path}: expected vertices (N, 3), cells (C, 4 or 8) and a displacement step")
+    u = disp[disp.shape[0] - 1]
+    lo, hi = x.min(axis=0), x.max(axis=0)
+    tol = REL_TOL * float(np.max(hi - lo))
+    on_top = np.abs(x[:, 2] - hi[2]) <= tol
+    tris, _ = plane_faces(cells, on_top)
+    verts = np.flatnonzero(on_top)
+    local = np.full(len(x), -1)
+    local[verts] = np.arange(len(verts))
+    xy = x[verts, :2] + u[verts, :2]
+    height = x[verts, 2] + u[verts, 2] - hi[2]
+    # A symmetry plane x = 0 or y = 0 bounds the model with the body on its positive side.
+    axes = [a for a in (0, 1) if abs(lo[a]) <= tol and hi[a] > tol]
+    return xy, height, local[tris], axes, tol
+
+
+def read_scratch(path, need):
+    """scratch.csv as a dict of float arrays, one per column; the arrays are empty when the file has
+    its header only (a run stopped before its first scratching step)."""
+    try:
+        with open(path, newline="") as f:
+            rows = list(csv.reader(f))
+    except OSError as e:
+        raise InputError(f"{path}: cannot read ({e.strerror})") from None
+    missing = [c for c in need if not rows or c not in rows[0]]
+    if missing:
+        raise InputError(f"{path}: no header or missing the columns {', '.join(missing)}")
+    head, body = rows[0], [r for r in rows[1:] if r]
+    try:
+        table = np.array([[float(v) for v in r] for r in body], dtype=float).reshape(len(body), -1)
+    except ValueError as e:
+        raise InputError(f"{path}: unreadable number ({e})") from None
+    if table.shape[1] != len(head):
+        raise InputError(f"{path}: rows of {table.shape[1]} values under a header of {len(head)} columns")
+    return {c: table[:, k] for k, c in enumerate(head)}
