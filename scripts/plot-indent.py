@@ -8,11 +8,15 @@ load and the plastic strain at the last step (after unloading, for a complete ru
 Reads RUN_DIR/load_displacement.csv and RUN_DIR/indent.h5 and writes into DIR (default RUN_DIR):
 load_displacement.png, imprint.csv, imprint.png, stress_slice.png, and with RUN_DIR/csm.csv (-csm_every)
 csm.png: H and E_r against depth (against h/t with --film-thickness t), with the reduced moduli of the
-film and the substrate drawn when the run's summary.json names them. Half (y >= 0) and quarter
-(x, y >= 0) models are mirrored for the pictures. Exit status 2 on bad input.
+film and the substrate drawn when the run's summary.json names them; with RUN_DIR/scratch.csv (a
+scratch test) scratch.png: the normal and lateral forces against the sliding distance and the apparent
+friction coefficient lateral / normal while sliding, with the Coulomb coefficient of the run's
+summary.json. Half (y >= 0) and quarter (x, y >= 0) models are mirrored for the pictures. Exit status 2
+on bad input.
 """
 import argparse
 import csv
+import json
 import os
 import sys
 
@@ -24,10 +28,12 @@ matplotlib.use("Agg")  # files only, never a window: the script also runs on mac
 import matplotlib.pyplot as plt  # noqa: E402  (must come after the backend is chosen)
 from matplotlib import colors, ticker, tri as mtri  # noqa: E402
 
-from runfiles import CELL_FACES, InputError, mirror, plane_faces  # noqa: E402  (this script's folder)
+from runfiles import CELL_FACES, InputError, mirror, plane_faces, read_scratch  # noqa: E402  (this script's folder)
 
 CSV_NAME = "load_displacement.csv"
 H5_NAME = "indent.h5"
+SCRATCH_NAME = "scratch.csv"
+SCRATCH_COLUMNS = ("distance_nm", "normal_uN", "lateral_uN", "side_uN", "friction")
 # Coordinates on a plane of the mesh (top surface, symmetry plane) are exact up to round-off, so a
 # tolerance relative to the mesh size separates them safely from the next layer of vertices.
 REL_TOL = 1e-9
@@ -127,6 +133,12 @@ def option_value(options, name):
     return words[words.index(name) + 1] if name in words[:-1] else None
 
 
+def summary_options(run_dir):
+    """The options string of the run's summary.json; empty for a run without one (stopped early)."""
+    summary = os.path.join(run_dir, "summary.json")
+    return json.load(open(summary)).get("options", "") if os.path.exists(summary) else ""
+
+
 def plot_csm(run_dir, thickness, path):
     """H and E_r against depth from the unloading stiffness (csm.csv), with E* of film and substrate."""
     c = np.atleast_1d(np.genfromtxt(os.path.join(run_dir, "csm.csv"), delimiter=",", names=True))
@@ -134,15 +146,12 @@ def plot_csm(run_dir, thickness, path):
     fig, (ax_h, ax_e) = plt.subplots(1, 2, figsize=(10, 4.2))
     ax_h.plot(x, c["H_GPa"], "o-", color="tab:blue", ms=4)
     ax_e.plot(x, c["E_r_GPa"], "o-", color="tab:red", ms=4, label="E_r from S")
-    summary = os.path.join(run_dir, "summary.json")
-    if os.path.exists(summary):
-        import json
-        options = json.load(open(summary)).get("options", "")
-        for region, style in (("film", "--"), ("substrate", ":")):
-            young, nu = option_value(options, f"-{region}_young"), option_value(options, f"-{region}_poisson")
-            if young and nu:
-                estar = float(young) / (1 - float(nu) ** 2)
-                ax_e.axhline(estar, ls=style, color="0.4", label=f"{region}: E/(1-nu^2) = {estar:.4g} GPa")
+    options = summary_options(run_dir)
+    for region, style in (("film", "--"), ("substrate", ":")):
+        young, nu = option_value(options, f"-{region}_young"), option_value(options, f"-{region}_poisson")
+        if young and nu:
+            estar = float(young) / (1 - float(nu) ** 2)
+            ax_e.axhline(estar, ls=style, color="0.4", label=f"{region}: E/(1-nu^2) = {estar:.4g} GPa")
     xlabel = "h / t" if thickness else "depth h (nm)"
     for ax, label in ((ax_h, "hardness H (GPa)"), (ax_e, "reduced modulus E_r (GPa)")):
         ax.set_xlabel(xlabel)
@@ -152,6 +161,36 @@ def plot_csm(run_dir, thickness, path):
         ax.grid(alpha=0.3)
     ax_e.legend(fontsize=8)
     fig.suptitle("from the unloading stiffness at each depth (-csm_every)")
+    save(fig, path)
+
+
+def plot_scratch(scratch, mu, path):
+    """The forces against the sliding distance, every row: the loading stands at distance 0 and the
+    unloading at the end. lateral / normal only while sliding (the distance grows): under the loading
+    and the unloading it is no friction coefficient, and it diverges as the normal load goes to 0."""
+    d = scratch["distance_nm"]
+    sliding = (d > 0) & (d > np.r_[-np.inf, d[:-1]])
+    fig, (ax_f, ax_m) = plt.subplots(2, 1, figsize=(7, 7), sharex=True)
+    ax_f.plot(d, scratch["normal_uN"], "o-", color="tab:blue", ms=3, label="normal P")
+    ax_f.plot(d, scratch["lateral_uN"], "s-", color="tab:red", ms=3, label="lateral (along the scratch)")
+    if np.any(scratch["side_uN"] != 0):
+        ax_f.plot(d, scratch["side_uN"], "^-", color="tab:green", ms=3, label="side (across it)")
+    ax_f.set_ylabel("force (uN)")
+    ax_f.set_title(f"largest normal load {scratch['normal_uN'].max():.4g} uN, "
+                   f"largest lateral force {np.abs(scratch['lateral_uN']).max():.4g} uN")
+    ax_f.legend(fontsize=8)
+    ratio = scratch["friction"][sliding]
+    ax_m.plot(d[sliding], ratio, "o-", color="tab:purple", ms=3, label="lateral / normal")
+    if mu is not None:
+        ax_m.axhline(mu, ls="--", color="0.4", label=f"Coulomb friction of the contact: {mu:.4g}")
+    if len(ratio):
+        ax_m.set_title(f"apparent friction coefficient while sliding: {ratio.min():.4g} to {ratio.max():.4g}, "
+                       f"last {ratio[-1]:.4g}", fontsize=10)
+    ax_m.set_xlabel("sliding distance (nm)")
+    ax_m.set_ylabel("lateral / normal")
+    ax_m.legend(fontsize=8)
+    for ax in (ax_f, ax_m):
+        ax.grid(alpha=0.3)
     save(fig, path)
 
 
@@ -318,8 +357,8 @@ def save(fig, path):
 
 
 def load_inputs(run_dir):
-    """The curve and the HDF5 file of a run, checked to agree, so that bad input fails before any
-    output is written."""
+    """The curve, the HDF5 file and the scratch table (None without one) of a run, checked to agree,
+    so that bad input fails before any output is written."""
     if not os.path.isdir(run_dir):
         raise InputError(f"{run_dir}: no such run directory")
     curve = read_curve(os.path.join(run_dir, CSV_NAME))
@@ -330,7 +369,9 @@ def load_inputs(run_dir):
     for name in ("von_mises", "plastic_strain"):
         if run.dataset(f"fields/{name}").shape[0] != rows:
             raise InputError(f"{run.path}: /fields/{name} and /fields/displacement have different step counts")
-    return curve, run
+    path = os.path.join(run_dir, SCRATCH_NAME)
+    scratch = read_scratch(path, SCRATCH_COLUMNS) if os.path.exists(path) else None
+    return curve, run, scratch
 
 
 def main(argv=None):
@@ -340,7 +381,7 @@ def main(argv=None):
     ap.add_argument("--film-thickness", type=float, help="film thickness t (nm): csm.png against h / t")
     args = ap.parse_args(argv)
     try:
-        curve, run = load_inputs(args.run_dir)
+        curve, run, scratch = load_inputs(args.run_dir)
     except InputError as e:
         print(f"plot-indent: error: {e}", file=sys.stderr)
         return 2
@@ -352,6 +393,11 @@ def main(argv=None):
         plot_stress_slice(run, curve, os.path.join(out, "stress_slice.png"))
     if os.path.exists(os.path.join(args.run_dir, "csm.csv")):
         plot_csm(args.run_dir, args.film_thickness, os.path.join(out, "csm.png"))
+    if scratch is not None and len(scratch["distance_nm"]):
+        mu = option_value(summary_options(args.run_dir), "-contact_friction")
+        plot_scratch(scratch, None if mu is None else float(mu), os.path.join(out, "scratch.png"))
+    elif scratch is not None:
+        print(f"no scratch.png: {SCRATCH_NAME} has no rows yet")
     return 0
 
 

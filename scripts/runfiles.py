@@ -96,10 +96,11 @@ def read_scratch(path, need):
     if missing:
         raise InputError(f"{path}: no header or missing the columns {', '.join(missing)}")
     head, body = rows[0], [r for r in rows[1:] if r]
+    for k, r in enumerate(body, 2):
+        if len(r) != len(head):
+            raise InputError(f"{path}: line {k} has {len(r)} values under a header of {len(head)} columns")
     try:
-        table = np.array([[float(v) for v in r] for r in body], dtype=float).reshape(len(body), -1)
+        table = np.array([[float(v) for v in r] for r in body], dtype=float).reshape(len(body), len(head))
     except ValueError as e:
         raise InputError(f"{path}: unreadable number ({e})") from None
-    if table.shape[1] != len(head):
-        raise InputError(f"{path}: rows of {table.shape[1]} values under a header of {len(head)} columns")
     return {c: table[:, k] for k, c in enumerate(head)}
