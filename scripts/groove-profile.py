@@ -131,7 +131,7 @@ def coordinate(v, tol):
 
 
 def write_profile(path, name, t, h):
-    np.savetxt(path, np.column_stack([t, h]), fmt="%.12g", delimiter=",", header=f"{name},height_nm", comments="")
+    np.savetxt(path, np.column_stack([t, h]), fmt="%.15g", delimiter=",", header=f"{name},height_nm", comments="")
     print(f"wrote {path}")
 
 
