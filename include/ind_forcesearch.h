@@ -16,9 +16,11 @@ typedef struct {
   int       side;        /* which end moved last (-1 lo, +1 hi), for the Illinois halving */
   PetscInt  its;         /* loads evaluated */
   PetscReal d[2], p[2];  /* the last two states evaluated (the start counts), newest last */
+  PetscReal first;       /* the depth to evaluate first when the start's load is unknown (-1: none) */
 } IndForceSearch;
 
-/* A search for target from the accepted state (depth d0, load p0). */
+/* A search for target from the accepted state (depth d0, load p0). p0 < 0: the load at d0 is not known
+   (the step changes more than the depth: a scratch slides), and d0 is evaluated first. */
 void      IndForceSearchStart(IndForceSearch *s, PetscReal target, PetscReal tol, PetscReal dmax, PetscReal d0,
                               PetscReal p0);
 /* The next depth to evaluate; slope is the last accepted step's dP/dh (<= 0: unknown, then guess is

@@ -29,6 +29,7 @@ typedef struct {
   PetscBool      restarted;  /* this part continued from a checkpoint */
   IndContact     contact;    /* for the check of the Oliver-Pharr area against the surface */
   IndWarnings   *warnings;   /* the run's; the summary's own are added */
+  PetscBool      slid;       /* the indenter slid (a scratch): no Oliver-Pharr analysis */
 } IndRunInfo;
 
 /* Prints the summary (when print is true); rank 0 writes the two files into dir when write is true,

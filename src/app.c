@@ -166,8 +166,9 @@ static PetscErrorCode SolveLoadStep(IndApp app, PetscReal t, IndStepResult *r)
   int             found = 0;
 
   PetscFunctionBeginUser;
+  /* A slide changes the load at the accepted depth: the search starts by evaluating it there. */
   IndForceSearchStart(&fs, target, lp->force_rtol * lp->force_max, lp->depth_max, app->contact->depth_c,
-    app->load_last);
+    IndLoadPathScratchFraction(lp, t) > IndLoadPathScratchFraction(lp, lp->t) ? -1.0 : app->load_last);
   app->defer_commit = PETSC_TRUE;
   for (PetscInt k = 0; k < max_depths && !found; ++k) {
     app->depth_trial = IndForceSearchNext(&fs, app->slope_last, lp->depth_max * lambda);
@@ -408,7 +409,7 @@ PetscErrorCode IndAppRun(IndApp app)
   PetscCall(Elapsed(app));
   if (app->summary) {
     IndRunInfo info = {app->start_time, app->elapsed_before + app->elapsed_now, app->rundir.restart, app->contact,
-                       &app->warnings};
+                       &app->warnings, app->scratch.length > 0 ? PETSC_TRUE : PETSC_FALSE};
     PetscCall(IndSummaryFinish(app->summary, &app->contact->indenter, &info, app->output->dir, app->output->curve,
       app->quiet ? PETSC_FALSE : PETSC_TRUE));
   }

@@ -11,7 +11,9 @@ void IndForceSearchStart(IndForceSearch *s, PetscReal target, PetscReal tol, Pet
   s->p[0] = s->p[1] = p0;
   s->lo = 0, s->plo = -1;
   s->hi = dmax, s->phi = -1;
-  if (p0 <= target) s->lo = d0, s->plo = p0;
+  s->first = -1;
+  if (p0 < 0) s->first = d0;
+  else if (p0 <= target) s->lo = d0, s->plo = p0;
   else s->hi = d0, s->phi = p0;
 }
 
@@ -19,6 +21,8 @@ PetscReal IndForceSearchNext(const IndForceSearch *s, PetscReal slope, PetscReal
 {
   const PetscReal width = s->hi - s->lo;
   PetscReal       d;
+
+  if (s->its == 0 && s->first >= 0) return s->first;
 
   if (s->plo >= 0 && s->phi >= 0) {
     /* both ends known: the secant, kept off the ends (else bisection) */

@@ -154,8 +154,12 @@ PetscErrorCode IndSummaryFinish(IndSummary s, const IndIndenter *ind, const IndR
   }
   pmax = &s->pts[imax];
   last = &s->pts[s->n - 1];
-  code = IndOliverPharr(h, P, s->n, &s->op, Area, (void *)ind, &r);
-  if (code == 1) PetscCall(PetscSNPrintf(why, sizeof(why), "fewer than 3 unloading points with P >= %g P_max: raise -load_unload_steps", (double)(1 - s->op.fraction)));
+  /* Oliver-Pharr's elastic unloading is that of a static indent from the largest load: after a slide
+     the contact is lopsided and the largest load may lie anywhere on the path. */
+  code = info->slid ? 3 : IndOliverPharr(h, P, s->n, &s->op, Area, (void *)ind, &r);
+  if (code == 3)
+    PetscCall(PetscSNPrintf(why, sizeof(why), "the indenter slid (-scratch_length); it applies to a static indent"));
+  else if (code == 1) PetscCall(PetscSNPrintf(why, sizeof(why), "fewer than 3 unloading points with P >= %g P_max: raise -load_unload_steps", (double)(1 - s->op.fraction)));
   else if (code) PetscCall(PetscSNPrintf(why, sizeof(why), "the unloading branch is not a power law"));
   else IndOPFromArea(&s->op, &r, pmax->area, &Hs, &Ers, &Es);
   if (!code && info->contact) {
