@@ -94,6 +94,30 @@ int main(int argc, char **argv)
   }
   PetscCall(PetscOptionsClearValue(NULL, "-load_unload_growth"));
   PetscCall(PetscOptionsClearValue(NULL, "-load_unload_steps"));
+  /* A scratch between loading and unloading: 2 load steps, 4 equal slide steps at full load (a cut one
+     grows by 1.5 back to the slide's increment 1/4, never to the loading one 1/2), then unloading. */
+  PetscCall(IndLoadPathSetFromOptions(PETSC_COMM_SELF, PETSC_TRUE, &lp));
+  IndLoadPathSetScratch(&lp, 4);
+  {
+    const PetscReal t_expect[] = {0.5, 1.0, 1.25, 1.375, 1.5625, 1.8125, 2.0, 2.5, 3.0};
+    const PetscReal l_expect[] = {0.5, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 0.5, 0.0};
+    const PetscReal f_expect[] = {0.0, 0.0, 0.25, 0.375, 0.5625, 0.8125, 1.0, 1.0, 1.0};
+    n = 0;
+    while (!IndLoadPathDone(&lp)) {
+      PetscReal t;
+      if (n == 3) PetscCall(IndLoadPathReject(&lp, PETSC_COMM_SELF, "test")); /* the slide's 0.25 -> 0.125 */
+      t = IndLoadPathTarget(&lp);
+      EXPECT(n < 9 && PetscAbsReal(t - t_expect[n]) < 1e-14 && PetscAbsReal(IndLoadPathFactor(&lp, t) - l_expect[n]) < 1e-14 &&
+               PetscAbsReal(IndLoadPathScratchFraction(&lp, t) - f_expect[n]) < 1e-14,
+             "scratch program step %" PetscInt_FMT ": t %.17g, lambda %g, slid %g", n, (double)t,
+             (double)IndLoadPathFactor(&lp, t), (double)IndLoadPathScratchFraction(&lp, t));
+      EXPECT(IndLoadPathScratching(&lp, t) == (n >= 2 && n <= 6 ? PETSC_TRUE : PETSC_FALSE), "scratching flag at %" PetscInt_FMT, n);
+      EXPECT(IndLoadPathUnloading(&lp, t) == (n >= 7 ? PETSC_TRUE : PETSC_FALSE), "unloading flag at %" PetscInt_FMT, n);
+      IndLoadPathAccept(&lp, 2);
+      n++;
+    }
+    EXPECT(n == 9, "load-scratch-unload took %" PetscInt_FMT " steps, not 9", n);
+  }
   PetscCall(PetscOptionsClearValue(NULL, "-load_steps"));
   PetscCall(PetscPrintf(PETSC_COMM_SELF, "load path: end point, cutback, growth, cap and error paths behave\n"));
   PetscCall(PetscFinalize());
