@@ -203,6 +203,23 @@ bad_np2(bad_depth_through_block_np2 ${EXPECT_ERROR} --fresh ${BAD_DIR}/through_b
 bad_np2(bad_rotation_half_np2 ${EXPECT_ERROR} --fresh ${BAD_DIR}/rotation
   "${RE_ROTATION_HALF}"
   ${INDENT_NP2} ${PAPER_COARSE} -indenter_rotation 30 -output_dir ${BAD_DIR}/rotation)
+# A scratch (-scratch_*) that is meaningless or leaves the model.
+indent_script_test(bad_scratch_length ${EXPECT_ERROR} "-scratch_length must be >= 0 \\(nm\\), got -5"
+  ${INDENT} ${OK_BOX} ${ELASTIC} ${SPHERE} -scratch_length -5)
+indent_script_test(bad_scratch_direction ${EXPECT_ERROR} "-scratch_direction 0,0 has no direction"
+  ${INDENT} ${OK_BOX} ${ELASTIC} ${SPHERE} -scratch_length 0.5 -scratch_direction 0,0)
+indent_script_test(bad_scratch_steps ${EXPECT_ERROR} "-scratch_steps must be >= 1, got 0"
+  ${INDENT} ${OK_BOX} ${ELASTIC} ${SPHERE} -scratch_length 0.5 -scratch_steps 0)
+indent_script_test(bad_scratch_steps_alone ${EXPECT_ERROR} "-scratch_steps needs a scratch: -scratch_length > 0"
+  ${INDENT} ${OK_BOX} ${ELASTIC} ${SPHERE} -scratch_steps 4)
+indent_script_test(bad_scratch_no_indenter ${EXPECT_ERROR} "-scratch_length needs an indenter: -indenter_type"
+  ${INDENT} ${OK_BOX} ${ELASTIC} -bc_fixed bottom -scratch_length 0.5)
+indent_script_test(bad_scratch_off_surface ${EXPECT_ERROR}
+  "-scratch_length 5 nm takes the indenter's axis from \\(0, 0\\) to \\(5, 0\\) nm, off the contact surface 'top' \\(x from 0 to 1"
+  ${INDENT} ${OK_BOX} ${ELASTIC} ${SPHERE} -scratch_length 5)
+bad_np2(bad_scratch_leaves_mirror_np2 ${EXPECT_ERROR} --fresh ${BAD_DIR}/scratch_mirror
+  "-scratch_direction 0,1 leaves the symmetry plane 'symmetry' \\(y = 0 nm\\) through the indenter's axis"
+  ${INDENT_NP2} ${PAPER_COARSE} -scratch_length 50 -scratch_direction 0,1 -output_dir ${BAD_DIR}/scratch_mirror)
 indent_script_test(bad_rotation_quarter ${EXPECT_ERROR}
   "${RE_ROTATION_QUARTER}"
   ${INDENT} ${OK_BOX} ${ELASTIC} -bc_fixed bottom -bc_symmetry left,front -indenter_type berkovich -load_depth 0.1)
