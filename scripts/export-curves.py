@@ -37,7 +37,7 @@ import numpy as np
 from runfiles import InputError, mirror, top_surface  # this script's folder
 
 CSV_NAME, SUMMARY_NAME, H5_NAME = "load_displacement.csv", "summary.json", "indent.h5"
-# Steps end exactly on the load program's segment ends (src/loadpath.c); the CSV prints t with 10
+# Steps end exactly on the load program's segment ends (src/solvers/loadpath.c); the CSV prints t with 10
 # significant digits, so this separates an end from the next step (at least 1/1024 of a segment away).
 T_TOL = 1e-8
 

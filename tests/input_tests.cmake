@@ -244,7 +244,7 @@ indent_script_test(help_bad_value ${EXPECT_ERROR} --absent ${BAD_DIR}/help_bad_v
   ${INDENT} -options_file ${CMAKE_SOURCE_DIR}/inputs/berkovich.opts -mesh_file ${PAPER_GEO} -load_depth 60nm
   -output_dir ${BAD_DIR}/help_bad_value -help)
 
-# ---- checks made while the load program runs (src/run_checks.c)
+# ---- checks made while the load program runs (src/solvers/run_checks.c)
 add_executable(test_run_checks test_run_checks.c)
 target_link_libraries(test_run_checks PRIVATE indentcore)
 set(RC_BOX -dm_plex_box_faces 4,4,2 -output_fields 0 -quiet ${ELASTIC})

@@ -1,4 +1,4 @@
-/* Unit test of the finite-strain kinematics (src/logstrain.c) around the small-strain kernel:
+/* Unit test of the finite-strain kinematics (src/physics/logstrain.c) around the small-strain kernel:
    eigen-decomposition, Hencky strain, stress and tangent against finite differences (plastic states,
    coincident eigenvalues), objectivity, uniaxial tension to 100% logarithmic strain against the
    closed form, elastic simple shear against the Hencky closed form and perfectly plastic simple shear

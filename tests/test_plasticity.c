@@ -1,4 +1,4 @@
-/* Unit test of the constitutive kernel (src/plasticity.c) against the closed forms of doc/theory.md
+/* Unit test of the constitutive kernel (src/physics/plasticity.c) against the closed forms of doc/theory.md
    section 1. Every expected value is computed here from a closed form; no numbers are pasted.
    Exits non-zero, with the failing check named, on the first failure. */
 #include <math.h>

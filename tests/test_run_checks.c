@@ -1,4 +1,4 @@
-static const char help[] = "The checks of src/run_checks.c on small runs, driven step by step up to the end of "
+static const char help[] = "The checks of src/solvers/run_checks.c on small runs, driven step by step up to the end of "
   "loading:\n"
                            "  -check edge      a contact node on the edge of the modelled surface touches the indenter "
                              "(warning)\n"

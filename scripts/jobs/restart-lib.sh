@@ -19,7 +19,7 @@
 #   PBS: SIGNAL_MARGIN  seconds before the wall-time limit at which indent is told to checkpoint
 
 INDENT_EX_TEMPFAIL=75
-# The files by which indent recognises a run in its -output_dir (RunFiles in src/rundir.c): a fresh
+# The files by which indent recognises a run in its -output_dir (RunFiles in src/io/rundir.c): a fresh
 # run refuses a directory holding any of them unless -output_overwrite is given.
 INDENT_RUN_FILES=(indent.h5 indent.xdmf indent.xdmf.tmp load_displacement.csv summary.txt summary.json
   checkpoint.h5 checkpoint.h5.tmp mesh.msh mesh.msh.log imprint.csv imprint.png load_displacement.png

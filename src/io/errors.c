@@ -19,7 +19,7 @@ static struct {
    the path CMake gives, which is absolute. */
 static PetscBool OwnSource(const char file[])
 {
-  const char *self = __FILE__, *tail = strstr(self, "src/errors.c");
+  const char *self = __FILE__, *tail = strstr(self, "src/io/errors.c");
   size_t      root = tail ? (size_t)(tail - self) : 0;
 
   if (!file) return PETSC_FALSE;
