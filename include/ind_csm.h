@@ -8,6 +8,8 @@
    solve per point, on a copy of the Jacobian: the load program's solver state is not touched. */
 #include "ind_app.h"
 
+#define IND_CSM_FILE "csm.csv" /* in the output directory; a restart truncates it (stepcsv.c) */
+
 typedef struct {
   PetscReal S;       /* uN/nm */
   PetscReal h_c, A;  /* nm, nm^2 (A from the indenter's area function at h_c) */
@@ -22,5 +24,3 @@ PetscErrorCode IndCSMStiffness(IndApp app, PetscReal h, PetscReal P, PetscReal a
    new). */
 PetscErrorCode IndCSMWrite(MPI_Comm comm, const char dir[], PetscInt step, PetscReal h, PetscReal P,
                            const IndCSMPoint *point);
-/* A restarted run: drops the lines of steps after `step` (rank 0; the file is rewritten and renamed). */
-PetscErrorCode IndCSMTruncate(MPI_Comm comm, const char dir[], PetscInt step);

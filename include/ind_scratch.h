@@ -6,6 +6,8 @@
    the scratch's state is the load program's and the contact's. */
 #include "ind_contact.h"
 
+#define IND_SCRATCH_FILE "scratch.csv" /* in the output directory; a restart truncates it (stepcsv.c) */
+
 typedef struct {
   PetscReal length;    /* nm; 0: no scratch */
   PetscReal dir[2];    /* unit direction of the slide */
@@ -28,5 +30,3 @@ void           IndScratchForces(const IndScratch *scratch, const IndContactSumma
    to <dir>/scratch.csv: the position, normal and lateral forces in uN and the apparent friction. */
 PetscErrorCode IndScratchWrite(MPI_Comm comm, const char dir[], const IndScratch *scratch, PetscInt step,
                                PetscReal t, PetscReal f, PetscReal depth, const IndContactSummary *contact);
-/* A restarted run: drops the lines of steps after `step`. */
-PetscErrorCode IndScratchTruncate(MPI_Comm comm, const char dir[], PetscInt step);

@@ -10,6 +10,7 @@
 #include "ind_options.h"
 #include "ind_forcesearch.h"
 #include "ind_csm.h"
+#include "ind_stepcsv.h"
 
 const char *const IndPredictorTypes[] = {"extrapolate", "tangent", "none", "IndPredictor", "IND_PREDICTOR_", NULL};
 
@@ -96,8 +97,8 @@ PetscErrorCode IndAppCreate(MPI_Comm comm, IndApp *out)
   if (app->rundir.restart) {
     IndSummary sum = app->summary;
     PetscCall(IndCheckpointRead(app, app->rundir.checkpoint));
-    PetscCall(IndCSMTruncate(comm, app->rundir.dir, app->path.accepted));
-    PetscCall(IndScratchTruncate(comm, app->rundir.dir, app->path.accepted));
+    PetscCall(IndStepCSVTruncate(comm, app->rundir.dir, IND_CSM_FILE, app->path.accepted));
+    PetscCall(IndStepCSVTruncate(comm, app->rundir.dir, IND_SCRATCH_FILE, app->path.accepted));
     PetscCall(IndOutputResume(app->output, sum ? sum->n : 0, sum ? sum->pts : NULL));
   }
 

@@ -110,13 +110,6 @@ PetscErrorCode IndCSMWrite(MPI_Comm comm, const char dir[], PetscInt step, Petsc
   PetscCall(PetscSNPrintf(line, sizeof(line), "%" PetscInt_FMT ",%.12g,%.12g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g", step,
                           (double)h, (double)P, (double)pt->S, (double)pt->h_c, (double)pt->A, (double)pt->H,
                           (double)pt->E_r, (double)pt->a));
-  PetscCall(IndStepCSVAppend(comm, dir, "csm.csv", CSM_HEADER, line));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-PetscErrorCode IndCSMTruncate(MPI_Comm comm, const char dir[], PetscInt step)
-{
-  PetscFunctionBeginUser;
-  PetscCall(IndStepCSVTruncate(comm, dir, "csm.csv", step));
+  PetscCall(IndStepCSVAppend(comm, dir, IND_CSM_FILE, CSM_HEADER, line));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -95,13 +95,6 @@ PetscErrorCode IndScratchWrite(MPI_Comm comm, const char dir[], const IndScratch
                           step, (double)t, (double)(f * s->length), (double)axis[0], (double)axis[1], (double)depth,
                           (double)normal, (double)lateral, (double)side, normal > 0 ? (double)(lateral / normal) : 0.0,
                           cs->contact, cs->stick, cs->slip));
-  PetscCall(IndStepCSVAppend(comm, dir, "scratch.csv", SCRATCH_HEADER, line));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-PetscErrorCode IndScratchTruncate(MPI_Comm comm, const char dir[], PetscInt step)
-{
-  PetscFunctionBeginUser;
-  PetscCall(IndStepCSVTruncate(comm, dir, "scratch.csv", step));
+  PetscCall(IndStepCSVAppend(comm, dir, IND_SCRATCH_FILE, SCRATCH_HEADER, line));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
