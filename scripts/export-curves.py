@@ -31,10 +31,9 @@ import os
 import shlex
 import sys
 
-import h5py
 import numpy as np
 
-from runfiles import InputError, mirror, top_surface  # this script's folder
+from runfiles import InputError, mirror, open_fields, top_surface  # this script's folder
 
 CSV_NAME, SUMMARY_NAME, H5_NAME = "load_displacement.csv", "summary.json", "indent.h5"
 # Steps end exactly on the load program's segment ends (src/solvers/loadpath.c); the CSV prints t with 10
@@ -209,13 +208,7 @@ def main(argv=None):
         if not os.path.isdir(args.run_dir):
             raise InputError(f"{args.run_dir}: no such run directory")
         curve = read_curve(os.path.join(args.run_dir, CSV_NAME))
-        h5_path = os.path.join(args.run_dir, H5_NAME)
-        if not os.path.isfile(h5_path):
-            raise InputError(f"{h5_path}: no such file (the imprint needs -output_fields 1)")
-        try:
-            h5 = h5py.File(h5_path, "r")
-        except OSError as e:
-            raise InputError(f"{h5_path}: cannot open as HDF5 ({e})") from None
+        h5, h5_path = open_fields(args.run_dir, H5_NAME, "the imprint needs -output_fields 1")
         with h5:
             options, start_time = run_options(args.run_dir, h5)
             xy, height, tris, axes, tol = top_surface(h5, h5_path)

@@ -27,14 +27,13 @@ import csv
 import os
 import sys
 
-import h5py
 import matplotlib
 import numpy as np
 
 matplotlib.use("Agg")  # files only, never a window: the script also runs on machines without a display
 import matplotlib.pyplot as plt  # noqa: E402  (must come after the backend is chosen)
 
-from runfiles import InputError, mirror, read_scratch, top_surface  # noqa: E402  (this script's folder)
+from runfiles import InputError, mirror, open_fields, read_scratch, top_surface  # noqa: E402  (this script's folder)
 
 H5_NAME, SCRATCH_NAME, CURVE_NAME = "indent.h5", "scratch.csv", "load_displacement.csv"
 PROG = "groove-profile.py"
@@ -175,13 +174,7 @@ def main(argv=None):
     try:
         if not os.path.isdir(args.run_dir):
             raise InputError(f"{args.run_dir}: no such run directory")
-        h5_path = os.path.join(args.run_dir, H5_NAME)
-        if not os.path.isfile(h5_path):
-            raise InputError(f"{h5_path}: no such file (the groove needs the field output)")
-        try:
-            h5 = h5py.File(h5_path, "r")
-        except OSError as e:
-            raise InputError(f"{h5_path}: cannot open as HDF5 ({e})") from None
+        h5, h5_path = open_fields(args.run_dir, H5_NAME, "the groove needs the field output")
         with h5:
             xy, height, tris, axes, tol = top_surface(h5, h5_path)
         if len(tris) == 0:

@@ -3,6 +3,7 @@ groove-profile.py): the cells' faces, the input error they report in one line, t
 plane of the mesh with its mirror images (half and quarter models), the deformed top surface of the last
 step, and the scratch test's table."""
 import csv
+import os
 
 import numpy as np
 
@@ -104,3 +105,16 @@ def read_scratch(path, need):
     except ValueError as e:
         raise InputError(f"{path}: unreadable number ({e})") from None
     return {c: table[:, k] for k, c in enumerate(head)}
+
+
+def open_fields(run_dir, h5_name, what):
+    """The run's field file, open for reading; InputError naming it when it is missing (what: why the
+    caller needs it) or not HDF5."""
+    import h5py  # only the scripts that read fields need it
+    path = os.path.join(run_dir, h5_name)
+    if not os.path.isfile(path):
+        raise InputError(f"{path}: no such file ({what})")
+    try:
+        return h5py.File(path, "r"), path
+    except OSError as e:
+        raise InputError(f"{path}: cannot open as HDF5 ({e})") from None

@@ -27,12 +27,12 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 SUPPRESSIONS = os.path.join(HERE, "openmpi.supp")
 # The unit and component tests, but for those that run for seconds without valgrind (which is 20 to 50
 # times slower): the manufactured solutions (three meshes each) and the P2 Newton tests. Plus the
-# flat-punch contact patch test, which also runs on 2 ranks, and a small indentation that writes every
-# output file (HDF5 fields, XDMF, curve, summary).
+# flat-punch contact patch test, which also runs on 2 ranks, a small indentation that writes every
+# output file (HDF5 fields, XDMF, curve, summary) and a small scratch (scratch.csv, the sliding contact).
 LABELS = {"unit", "component"}
 SLOW = re.compile(r"^(mms_|plastic_newton(_finite)?_tet_P2)")
 TWO_RANKS = "contact_patch_hex_Q1_np2"
-EXTRA = {TWO_RANKS, "xdmf_indent_run"}
+EXTRA = {TWO_RANKS, "xdmf_indent_run", "example_scratch_np2"}
 VALGRIND_EXIT = 99  # --error-exitcode: tells memcheck's errors from the test's own failures
 
 
