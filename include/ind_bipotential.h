@@ -10,7 +10,8 @@ extern const char *const IndContactStatusNames[];
 /* Predictor tau = r - rho (du_t + (g + mu |du_t|) n): r the reaction of the last outer iteration, g
    the current gap (nm, positive open), du_t the tangential slip of the node relative to the indenter
    over the load step (nm), rho the penalty-like parameter (nN/nm). */
-void IndBipotentialPredictor(PetscReal mu, PetscReal rho, const PetscReal r[3], PetscReal gap, const PetscReal du_t[2], PetscReal tau[3]);
+void IndBipotentialPredictor(PetscReal mu, PetscReal rho, const PetscReal r[3], PetscReal gap,
+  const PetscReal du_t[2], PetscReal tau[3]);
 
 /* Corrector: r = projection of tau on the Coulomb cone |r_t| <= mu r_n (separating, sticking or
    sliding). When D is not NULL it receives dr/dtau (3x3, row-major; symmetric). */

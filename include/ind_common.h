@@ -13,7 +13,8 @@
 
 typedef struct {
   PetscLogStage setup, solve, output;
-  PetscLogEvent mesh_create, mesh_distribute, geometry, preallocate, near_null, residual, jacobian, contact, bc, output_write;
+  PetscLogEvent mesh_create, mesh_distribute, geometry, preallocate, near_null, residual, jacobian, contact, bc,
+    output_write;
 } IndLogTable;
 
 /* Registered once by IndLogRegister(); read-only afterwards. */

@@ -35,5 +35,6 @@ static inline void IndDiscGradients(IndDisc disc, PetscInt i, PetscInt q, PetscR
 {
   const PetscReal *dN = disc->dN + q * disc->nb * 3, *iJ = disc->invJ + (i * disc->nq + q) * 9;
   for (PetscInt a = 0; a < disc->nb; ++a)
-    for (PetscInt j = 0; j < 3; ++j) G[a * 3 + j] = dN[a * 3 + 0] * iJ[0 * 3 + j] + dN[a * 3 + 1] * iJ[1 * 3 + j] + dN[a * 3 + 2] * iJ[2 * 3 + j];
+    for (PetscInt j = 0; j < 3; ++j) G[a * 3 + j] = dN[a * 3 + 0] * iJ[0 * 3 + j] + dN[a * 3 + 1] * iJ[1 * 3 + j]
+      + dN[a * 3 + 2] * iJ[2 * 3 + j];
 }

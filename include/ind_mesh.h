@@ -22,7 +22,8 @@ struct _p_IndMesh {
 PetscErrorCode IndMeshCreate(MPI_Comm comm, IndMesh *mesh);
 PetscErrorCode IndMeshDestroy(IndMesh *mesh);
 /* The label of a region; a missing region is an error naming the option that asked for it. */
-PetscErrorCode IndMeshGetRegionLabel(IndMesh mesh, const char name[], PetscInt dim, const char option[], DMLabel *label);
+PetscErrorCode IndMeshGetRegionLabel(IndMesh mesh, const char name[], PetscInt dim, const char option[],
+  DMLabel *label);
 /* Errors (collectively) when the region has no cells (dim 3) or faces (dim 2): a physical group of the
    mesh file without elements. option names what uses it (surfaces). */
 PetscErrorCode IndMeshCheckRegionNotEmpty(IndMesh mesh, const char name[], PetscInt dim, const char option[]);

@@ -30,7 +30,9 @@ void IndOPParamsDefault(IndOPParams *p);
 /* Analyses the curve (h[i], P[i]), i < n, in the order recorded: loading, then unloading after the
    largest load. Returns 0, or a positive code: 1 fewer than 3 points to fit, 2 the fit failed (not a
    power law with 0 < m), 3 a bad parameter. */
-int IndOliverPharr(const PetscReal *h, const PetscReal *P, PetscInt n, const IndOPParams *p, IndAreaFn area, void *ctx, IndOPResult *r);
+int IndOliverPharr(const PetscReal *h, const PetscReal *P, PetscInt n, const IndOPParams *p, IndAreaFn area,
+  void *ctx, IndOPResult *r);
 /* The same quantities from a known contact area A at P_max (e.g. the simulation's true area). E is
    NaN when E_r exceeds what the indenter's own compliance allows. */
-void IndOPFromArea(const IndOPParams *p, const IndOPResult *fit, PetscReal A, PetscReal *H, PetscReal *E_r, PetscReal *E);
+void IndOPFromArea(const IndOPParams *p, const IndOPResult *fit, PetscReal A, PetscReal *H, PetscReal *E_r,
+  PetscReal *E);

@@ -38,7 +38,8 @@ struct _p_IndOutput {
   Vec           Uloc, vloc, disp, stress, strain, vonmises, plastic, back, yielding;
   IndCellFields cells; /* per local cell, filled by the assembly */
   IndContact    contact;                      /* NULL without an indenter */
-  Vec           Gc, Cloc, c3, pressure, status; /* contact fields: disc layout (global, local), vertex 3-dof and 1-dof */
+  Vec           Gc, Cloc, c3, pressure, status; /* contact fields: disc layout (global, local),
+    vertex 3-dof and 1-dof */
   PetscInt    nsteps;
   PetscReal  *times;    /* per output step: XDMF time value, the pseudo-time t given to IndOutputSetStepInfo */
   PetscReal  *info;     /* per output step: IND_OUTPUT_INFO values, NaN where not known */

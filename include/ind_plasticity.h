@@ -58,4 +58,5 @@ PetscErrorCode IndPlasticParamsCheck(const IndPlasticParams *m, const char prefi
    On IND_PLASTIC_NOT_CONVERGED new_state is a copy of old and sigma, D and *dp_out are NaN, so a
    caller that forgets the status still cannot converge on an invented state: reject the step
    (e.g. SNESSetFunctionDomainError) and cut it. */
-IndPlasticStatus IndPlasticUpdate(const IndPlasticParams *m, const PetscReal eps[6], const IndPlasticState *old, IndPlasticState *new_state, PetscReal sigma[6], PetscReal D[36], PetscReal *dp_out);
+IndPlasticStatus IndPlasticUpdate(const IndPlasticParams *m, const PetscReal eps[6], const IndPlasticState *old,
+  IndPlasticState *new_state, PetscReal sigma[6], PetscReal D[36], PetscReal *dp_out);

@@ -35,7 +35,8 @@ struct _p_IndSolver {
 };
 
 /* depth_max sets the contact loop's penetration tolerance. */
-PetscErrorCode IndSolverCreate(DM dm, IndAssembly assembly, IndBC bc, IndContact contact, PetscReal depth_max, IndSolver *solver);
+PetscErrorCode IndSolverCreate(DM dm, IndAssembly assembly, IndBC bc, IndContact contact, PetscReal depth_max,
+  IndSolver *solver);
 PetscErrorCode IndSolverDestroy(IndSolver *solver);
 /* Tangent predictor for a step from load factor t_old (U converged there) to t_new: adds the
    prescribed-value increment and the response of the tangent at U to it, so that an elastic step

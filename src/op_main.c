@@ -1,5 +1,7 @@
-static const char help[] = "indent-op: Oliver-Pharr analysis of a load-displacement curve (CSV with columns depth_nm and load_uN,\n"
-                           "as indent writes in load_displacement.csv; a contact_area_nm2 column adds the true-area values).\n"
+static const char help[] = "indent-op: Oliver-Pharr analysis of a load-displacement curve (CSV with columns depth_nm "
+  "and load_uN,\n"
+                           "as indent writes in load_displacement.csv; a contact_area_nm2 column adds the true-area "
+                             "values).\n"
                            "  -op_file FILE            the curve (required)\n"
                            "  -op_fraction f           fit the unloading points with P >= (1 - f) P_max (0.5)\n"
                            "  -op_epsilon e            h_c = h_max - e P_max / S (0.75)\n"
@@ -7,7 +9,8 @@ static const char help[] = "indent-op: Oliver-Pharr analysis of a load-displacem
                            "  -op_indenter_modulus E   GPa; 0 for a rigid indenter (default); diamond: 1141\n"
                            "  -op_indenter_poisson nu  (0.07)\n"
                            "  -op_poisson nu           the sample's, for its modulus E (0.3)\n"
-                           "  -indenter_type, -indenter_radius (nm), -indenter_angle (degrees): the area function A(h_c)\n";
+                           "  -indenter_type, -indenter_radius (nm), -indenter_angle (degrees): the area function "
+                             "A(h_c)\n";
 
 #include <string.h>
 #include "ind_summary.h"
@@ -35,7 +38,8 @@ static PetscErrorCode ReadCurve(const char path[], PetscInt *n, PetscReal **h, P
     if (!strcmp(tok, "load_uN")) cP = col;
     if (!strcmp(tok, "contact_area_nm2")) cA = col;
   }
-  PetscCheck(ch >= 0 && cP >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "'%s' (-op_file) has no depth_nm and load_uN columns", path);
+  PetscCheck(ch >= 0 && cP >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED,
+    "'%s' (-op_file) has no depth_nm and load_uN columns", path);
   PetscCall(PetscMalloc3(cap, h, cap, P, cap, A));
   *n = 0;
   while (fgets(line, sizeof(line), fp)) {
@@ -53,7 +57,8 @@ static PetscErrorCode ReadCurve(const char path[], PetscInt *n, PetscReal **h, P
     (*A)[*n] = 0;
     for (char *tok = strtok(line, ",\r\n"); tok; tok = strtok(NULL, ",\r\n"), ++col) {
       const double v = strtod(tok, &end);
-      if (col == ch || col == cP || col == cA) PetscCheck(end != tok, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "'%s' (-op_file) line %" PetscInt_FMT ": '%s' is not a number", path, *n + 2, tok);
+      if (col == ch || col == cP || col == cA) PetscCheck(end != tok, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED,
+        "'%s' (-op_file) line %" PetscInt_FMT ": '%s' is not a number", path, *n + 2, tok);
       if (col == ch) (*h)[*n] = v;
       if (col == cP) (*P)[*n] = v;
       if (col == cA) (*A)[*n] = v;
@@ -92,23 +97,35 @@ static PetscErrorCode Analyse(void)
   PetscCheck(has_file, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-op_file is required (a CSV with depth_nm and load_uN)");
   PetscCheck(has_type, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-indenter_type is required for the area function");
   ind.angle = angle * PETSC_PI / 180;
-  PetscCheck(!IndIndenterSetUp(&ind), PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-indenter_type %s: bad -indenter_radius or -indenter_angle", IndIndenterTypes[ind.type]);
+  PetscCheck(!IndIndenterSetUp(&ind), PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE,
+    "-indenter_type %s: bad -indenter_radius or -indenter_angle", IndIndenterTypes[ind.type]);
   PetscCall(ReadCurve(path, &n, &h, &P, &A));
   code = IndOliverPharr(h, P, n, &p, Area, &ind, &r);
-  PetscCheck(code != 1, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "'%s': fewer than 3 unloading points with P >= (1 - %g) P_max: record more unloading steps or raise -op_fraction", path, (double)p.fraction);
-  PetscCheck(code != 3, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-op_fraction must lie in (0, 1], -op_epsilon and -op_beta be > 0");
-  PetscCheck(code == 0, PETSC_COMM_WORLD, PETSC_ERR_NOT_CONVERGED, "'%s': the unloading branch is not a power law (fit gave alpha %g, m %g)", path, (double)r.alpha, (double)r.m);
+  PetscCheck(code != 1, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG,
+    "'%s': fewer than 3 unloading points with P >= (1 - %g) P_max: record more unloading steps or raise -op_fraction",
+    path, (double)p.fraction);
+  PetscCheck(code != 3, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE,
+    "-op_fraction must lie in (0, 1], -op_epsilon and -op_beta be > 0");
+  PetscCheck(code == 0, PETSC_COMM_WORLD, PETSC_ERR_NOT_CONVERGED,
+    "'%s': the unloading branch is not a power law (fit gave alpha %g, m %g)", path, (double)r.alpha, (double)r.m);
   for (PetscInt i = 1; i < n; ++i)
     if (P[i] > P[imax]) imax = i;
-  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "Oliver-Pharr analysis of %s (%s indenter)\n", path, IndIndenterTypes[ind.type]));
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "Oliver-Pharr analysis of %s (%s indenter)\n", path,
+    IndIndenterTypes[ind.type]));
   PetscCall(PetscPrintf(PETSC_COMM_WORLD, "  P_max %.6g uN at h_max %.6g nm\n", (double)r.P_max, (double)r.h_max));
-  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "  fit of %" PetscInt_FMT " unloading points: P = %.6g (h - %.6g)^%.6g, rms misfit %.3g uN\n", r.npoints, (double)r.alpha, (double)r.h_f, (double)r.m, (double)r.rms));
-  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "  S %.10g uN/nm, h_c %.10g nm (h_c/h_max %.4f), A(h_c) %.10g nm^2\n", (double)r.S, (double)r.h_c, (double)(r.h_c / r.h_max), (double)r.A));
-  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "  H %.10g GPa, E_r %.10g GPa, E %.10g GPa (nu %.3g, %s indenter)\n", (double)r.H, (double)r.E_r, (double)r.E, (double)p.nu_sample, p.E_indenter > 0 ? "elastic" : "rigid"));
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD,
+    "  fit of %" PetscInt_FMT " unloading points: P = %.6g (h - %.6g)^%.6g, rms misfit %.3g uN\n", r.npoints,
+    (double)r.alpha, (double)r.h_f, (double)r.m, (double)r.rms));
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "  S %.10g uN/nm, h_c %.10g nm (h_c/h_max %.4f), A(h_c) %.10g nm^2\n",
+    (double)r.S, (double)r.h_c, (double)(r.h_c / r.h_max), (double)r.A));
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "  H %.10g GPa, E_r %.10g GPa, E %.10g GPa (nu %.3g, %s indenter)\n",
+    (double)r.H, (double)r.E_r, (double)r.E, (double)p.nu_sample, p.E_indenter > 0 ? "elastic" : "rigid"));
   if (A[imax] > 0) {
     PetscReal H, Er, E;
     IndOPFromArea(&p, &r, A[imax], &H, &Er, &E);
-    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "  true contact area at P_max %.6g nm^2 (A_true / A(h_c) = %.4f): H %.6g GPa, E_r %.6g GPa, E %.6g GPa\n", (double)A[imax], (double)(A[imax] / r.A), (double)H, (double)Er, (double)E));
+    PetscCall(PetscPrintf(PETSC_COMM_WORLD,
+      "  true contact area at P_max %.6g nm^2 (A_true / A(h_c) = %.4f): H %.6g GPa, E_r %.6g GPa, E %.6g GPa\n",
+      (double)A[imax], (double)(A[imax] / r.A), (double)H, (double)Er, (double)E));
   }
   PetscCall(PetscFree3(h, P, A));
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -1,12 +1,17 @@
-static const char help[] = "Contact verification against closed forms, after every accepted step of an indentation run:\n"
+static const char help[] = "Contact verification against closed forms, after every accepted step of an indentation "
+  "run:\n"
                            "  -expect_hertz           P = 4/3 E* sqrt(R) h^1.5 (sphere; E, nu of region 'domain')\n"
                            "  -expect_sneddon         P = 2/pi E* tan(alpha) h^2 (cone of half-angle alpha)\n"
                            "  -expect_tol t           relative tolerance of those (default 0.03)\n"
                            "  -expect_from h          check only steps with depth >= h (nm) while loading\n"
-                           "  -expect_patch           flat punch over the whole top of a block of height H: every contact node's\n"
-                           "                          reaction over its tributary area equals -E depth / H (relative 1e-8)\n"
-                           "  -expect_stick_inside    with friction: every sticking node lies nearer the axis than every slipping one\n"
-                           "  -expect_unload          the run ends with zero load and a displacement below 1e-6 of the depth\n";
+                           "  -expect_patch           flat punch over the whole top of a block of height H: every "
+                             "contact node's\n"
+                           "                          reaction over its tributary area equals -E depth / H (relative "
+                             "1e-8)\n"
+                           "  -expect_stick_inside    with friction: every sticking node lies nearer the axis than "
+                             "every slipping one\n"
+                           "  -expect_unload          the run ends with zero load and a displacement below 1e-6 of "
+                             "the depth\n";
 
 #include "ind_app.h"
 
@@ -25,9 +30,11 @@ static PetscErrorCode CheckStep(IndApp app, const IndStepResult *r, void *ctx)
 
   PetscFunctionBeginUser;
   if ((e->hertz || e->sneddon) && !IndLoadPathUnloading(&app->path, r->t) && h >= e->from && h > 0) {
-    const PetscReal P = e->hertz ? 4.0 / 3.0 * Es * PetscSqrtReal(in->radius) * PetscPowReal(h, 1.5) : 2.0 / PETSC_PI * Es * PetscTanReal(in->angle) * h * h;
+    const PetscReal P = e->hertz ? 4.0 / 3.0 * Es * PetscSqrtReal(in->radius) * PetscPowReal(h,
+      1.5) : 2.0 / PETSC_PI * Es * PetscTanReal(in->angle) * h * h;
     const PetscReal err = r->contact.load / P - 1;
-    PetscCall(PetscPrintf(app->comm, "  depth %8.3f nm: P %.6e nN, %s %.6e nN, error %+.3f%%\n", (double)h, (double)r->contact.load, e->hertz ? "Hertz" : "Sneddon", (double)P, (double)(100 * err)));
+    PetscCall(PetscPrintf(app->comm, "  depth %8.3f nm: P %.6e nN, %s %.6e nN, error %+.3f%%\n", (double)h,
+      (double)r->contact.load, e->hertz ? "Hertz" : "Sneddon", (double)P, (double)(100 * err)));
     e->worst = PetscMax(e->worst, PetscAbsReal(err));
     e->checked++;
   }
@@ -36,29 +43,39 @@ static PetscErrorCode CheckStep(IndApp app, const IndStepResult *r, void *ctx)
     PetscReal       worst = 0;
     PetscInt        n     = app->contact->n, touching = 0;
     for (PetscInt i = 0; i < n; ++i) {
-      worst = PetscMax(worst, PetscAbsReal(app->contact->R[3 * i + 2] / app->contact->A[i] - sigma) / PetscAbsReal(sigma));
-      worst = PetscMax(worst, (PetscAbsReal(app->contact->R[3 * i]) + PetscAbsReal(app->contact->R[3 * i + 1])) / (PetscAbsReal(sigma) * app->contact->A[i]));
+      worst = PetscMax(worst,
+        PetscAbsReal(app->contact->R[3 * i + 2] / app->contact->A[i] - sigma) / PetscAbsReal(sigma));
+      worst = PetscMax(worst,
+        (PetscAbsReal(app->contact->R[3 * i]) + PetscAbsReal(app->contact->R[3 * i + 1])) / (PetscAbsReal(sigma)
+          * app->contact->A[i]));
       touching += app->contact->status[i] != IND_CONTACT_OPEN;
     }
     PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &worst, 1, MPIU_REAL, MPIU_MAX, app->comm));
     PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &n, 1, MPIU_INT, MPI_SUM, app->comm));
     PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &touching, 1, MPIU_INT, MPI_SUM, app->comm));
-    PetscCall(PetscPrintf(app->comm, "  depth %8.4f nm: sigma_zz %.10e GPa; %" PetscInt_FMT " of %" PetscInt_FMT " nodes in contact; worst |R / A - sigma| / |sigma| = %.3e\n", (double)h, (double)sigma, touching, n, (double)worst));
-    PetscCheck(touching == n, app->comm, PETSC_ERR_PLIB, "Only %" PetscInt_FMT " of %" PetscInt_FMT " top nodes touch the punch", touching, n);
+    PetscCall(PetscPrintf(app->comm,
+      "  depth %8.4f nm: sigma_zz %.10e GPa; %" PetscInt_FMT " of %" PetscInt_FMT " nodes in contact; worst |R / A - "
+      "sigma| / |sigma| = %.3e\n", (double)h, (double)sigma, touching, n, (double)worst));
+    PetscCheck(touching == n, app->comm, PETSC_ERR_PLIB,
+      "Only %" PetscInt_FMT " of %" PetscInt_FMT " top nodes touch the punch", touching, n);
     e->worst = PetscMax(e->worst, worst);
     e->checked++;
   }
   if (e->stick_inside && r->contact.stick > 0 && r->contact.slip > 0) {
     PetscReal rstick = 0, rslip = PETSC_MAX_REAL;
     for (PetscInt i = 0; i < app->contact->n; ++i) {
-      const PetscReal *X = app->contact->X + 3 * i, rad = PetscSqrtReal(PetscSqr(X[0] - in->axis[0]) + PetscSqr(X[1] - in->axis[1]));
+      const PetscReal *X = app->contact->X + 3 * i,
+        rad = PetscSqrtReal(PetscSqr(X[0] - in->axis[0]) + PetscSqr(X[1] - in->axis[1]));
       if (app->contact->status[i] == IND_CONTACT_STICK) rstick = PetscMax(rstick, rad);
       if (app->contact->status[i] == IND_CONTACT_SLIP) rslip = PetscMin(rslip, rad);
     }
     PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &rstick, 1, MPIU_REAL, MPIU_MAX, app->comm));
     PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &rslip, 1, MPIU_REAL, MPIU_MIN, app->comm));
-    PetscCall(PetscPrintf(app->comm, "  depth %8.3f nm: %" PetscInt_FMT " stick out to r = %.2f nm, %" PetscInt_FMT " slip from r = %.2f nm\n", (double)h, r->contact.stick, (double)rstick, r->contact.slip, (double)rslip));
-    PetscCheck(rstick <= rslip, app->comm, PETSC_ERR_PLIB, "A sticking node (r = %g) lies outside a slipping one (r = %g)", (double)rstick, (double)rslip);
+    PetscCall(PetscPrintf(app->comm,
+      "  depth %8.3f nm: %" PetscInt_FMT " stick out to r = %.2f nm, %" PetscInt_FMT " slip from r = %.2f nm\n",
+      (double)h, r->contact.stick, (double)rstick, r->contact.slip, (double)rslip));
+    PetscCheck(rstick <= rslip, app->comm, PETSC_ERR_PLIB,
+      "A sticking node (r = %g) lies outside a slipping one (r = %g)", (double)rstick, (double)rslip);
     e->checked++;
   }
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -94,12 +111,18 @@ int main(int argc, char **argv)
   if (e.unload) {
     PetscReal umax;
     PetscCall(VecNorm(app->U, NORM_INFINITY, &umax));
-    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "after unloading: depth %.4f nm, max |u| %.3e nm (%.2e of the largest depth)\n", (double)app->contact->indenter.depth, (double)umax, (double)(umax / app->path.depth_max)));
-    PetscCheck(umax <= 1e-6 * app->path.depth_max, PETSC_COMM_WORLD, PETSC_ERR_PLIB, "An elastic body keeps a displacement of %g nm after unloading", (double)umax);
+    PetscCall(PetscPrintf(PETSC_COMM_WORLD,
+      "after unloading: depth %.4f nm, max |u| %.3e nm (%.2e of the largest depth)\n",
+      (double)app->contact->indenter.depth, (double)umax, (double)(umax / app->path.depth_max)));
+    PetscCheck(umax <= 1e-6 * app->path.depth_max, PETSC_COMM_WORLD, PETSC_ERR_PLIB,
+      "An elastic body keeps a displacement of %g nm after unloading", (double)umax);
   }
-  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "contact checks: %" PetscInt_FMT " steps checked, worst relative error %.3e (tolerance %.1e)\n", e.checked, (double)e.worst, (double)e.tol));
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD,
+    "contact checks: %" PetscInt_FMT " steps checked, worst relative error %.3e (tolerance %.1e)\n", e.checked,
+    (double)e.worst, (double)e.tol));
   PetscCheck(e.checked > 0 || e.unload, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "Nothing was checked");
-  PetscCheck(e.worst <= e.tol, PETSC_COMM_WORLD, PETSC_ERR_NOT_CONVERGED, "Worst relative error %.3e above %.1e", (double)e.worst, (double)e.tol);
+  PetscCheck(e.worst <= e.tol, PETSC_COMM_WORLD, PETSC_ERR_NOT_CONVERGED, "Worst relative error %.3e above %.1e",
+    (double)e.worst, (double)e.tol);
   PetscCall(IndAppDestroy(&app));
   PetscCall(PetscFinalize());
   return 0;

@@ -42,7 +42,8 @@ static void CheckGradient(const char *name, const IndIndenter *ind, PetscReal sc
     IndIndenterGap(ind, x, &g, n);
     worst_unit = PetscMax(worst_unit, PetscAbsReal(n[0] * n[0] + n[1] * n[1] + n[2] * n[2] - 1));
     for (int c = 0; c < 3; ++c) y[c] = x[c] + 0.01 * scale * (2 * Rand(&seed) - 1);
-    worst_lip = PetscMax(worst_lip, PetscAbsReal(Gap(ind, y) - g) / PetscSqrtReal(PetscSqr(y[0] - x[0]) + PetscSqr(y[1] - x[1]) + PetscSqr(y[2] - x[2])) - 1);
+    worst_lip = PetscMax(worst_lip, PetscAbsReal(Gap(ind,
+      y) - g) / PetscSqrtReal(PetscSqr(y[0] - x[0]) + PetscSqr(y[1] - x[1]) + PetscSqr(y[2] - x[2])) - 1);
     if (g < -ind->radius + 1e-3 * scale && ind->type != IND_INDENTER_FLAT) continue; /* inside the core */
     if (ind->type == IND_INDENTER_FLAT && g < 1e-3 * scale) continue;
     for (int c = 0; c < 3; ++c) {
@@ -95,7 +96,8 @@ static void CheckExactDistances(void)
   worst = 0;
   for (int k = 0; k < 50; ++k) {
     const PetscReal a = c.angle, t = 5.0 * (k + 1), phi = 0.37 * k, d = 0.5 * k - 5;
-    const PetscReal q[3] = {7.0 + t * PetscSinReal(a) * PetscCosReal(phi), -3.0 + t * PetscSinReal(a) * PetscSinReal(phi), lowest_s + t * PetscCosReal(a)};
+    const PetscReal q[3] = {7.0 + t * PetscSinReal(a) * PetscCosReal(phi),
+      -3.0 + t * PetscSinReal(a) * PetscSinReal(phi), lowest_s + t * PetscCosReal(a)};
     const PetscReal m[3] = {PetscCosReal(a) * PetscCosReal(phi), PetscCosReal(a) * PetscSinReal(phi), -PetscSinReal(a)};
     if (d < 0 && -d > t * PetscSinReal(a)) continue; /* would reach the axis */
     for (int i = 0; i < 3; ++i) x[i] = q[i] + d * m[i];
@@ -127,7 +129,9 @@ static void CheckExactDistances(void)
         /* on face i, midway between its edges at the same height, then out along its normal */
         for (int k = 0; k < 3; ++k) f[k] = apex[k] + 100 * (e[k] + e2[k]) + (50 + d) * b.m[i][k];
         IndIndenterGap(&b, f, &g, n);
-        worst = PetscMax(worst, PetscAbsReal(g - d) + PetscAbsReal(n[0] - b.m[i][0]) + PetscAbsReal(n[1] - b.m[i][1]) + PetscAbsReal(n[2] - b.m[i][2]));
+        worst = PetscMax(worst,
+          PetscAbsReal(g - d) + PetscAbsReal(n[0] - b.m[i][0]) + PetscAbsReal(n[1] - b.m[i][1]) + PetscAbsReal(n[2]
+            - b.m[i][2]));
       }
     }
     /* below the tip: the lowest point is at depth 40 */
@@ -146,11 +150,13 @@ static void CheckAreas(void)
   PetscReal   worst;
 
   MakeIndenter(IND_INDENTER_SPHERE, 100.0, &s);
-  Report("sphere: A(h) = pi (2 R h - h^2)", PetscAbsReal(IndIndenterArea(&s, 10) - PETSC_PI * (2000 - 100)) / (PETSC_PI * 1900), 1e-15);
+  Report("sphere: A(h) = pi (2 R h - h^2)", PetscAbsReal(IndIndenterArea(&s,
+    10) - PETSC_PI * (2000 - 100)) / (PETSC_PI * 1900), 1e-15);
 
   /* Sharp Berkovich: 3 sqrt(3) tan^2(65.27 deg) h^2 = 24.5 h^2 (to the 3 digits of the angle). */
   MakeIndenter(IND_INDENTER_BERKOVICH, 0.0, &bs);
-  Report("berkovich sharp: A / h^2 = 24.5 (3 digits)", PetscAbsReal(IndIndenterArea(&bs, 100) / 1e4 - 24.5) / 24.5, 3e-3);
+  Report("berkovich sharp: A / h^2 = 24.5 (3 digits)", PetscAbsReal(IndIndenterArea(&bs, 100) / 1e4 - 24.5) / 24.5,
+    3e-3);
   MakeIndenter(IND_INDENTER_VICKERS, 0.0, &v);
   Report("vickers sharp: A / h^2 = 24.5 (3 digits)", PetscAbsReal(IndIndenterArea(&v, 100) / 1e4 - 24.5) / 24.5, 3e-3);
 
@@ -160,12 +166,14 @@ static void CheckAreas(void)
   worst = PetscAbsReal(IndIndenterArea(&b, 1.0) - PETSC_PI * (100.0 - 1.0)) / (PETSC_PI * 99.0);
   Report("berkovich R = 50, h = 1: sphere cap", worst, 1e-12);
   MakeIndenter(IND_INDENTER_BERKOVICH, 1e-9, &b);
-  Report("berkovich R = 1e-9: sharp closed form", PetscAbsReal(IndIndenterArea(&b, 100) - IndIndenterArea(&bs, 100)) / IndIndenterArea(&bs, 100), 1e-9);
+  Report("berkovich R = 1e-9: sharp closed form", PetscAbsReal(IndIndenterArea(&b, 100) - IndIndenterArea(&bs,
+    100)) / IndIndenterArea(&bs, 100), 1e-9);
   /* Deep in, against an independent estimate: the fraction of a fine grid over the section that
      lies inside the indenter (error about the perimeter times the grid spacing, over the area). */
   MakeIndenter(IND_INDENTER_BERKOVICH, 50.0, &b);
   {
-    const PetscReal h = 400, z = b.surface - b.depth + h, L = 1.2 * (h + 50) * PetscTanReal(b.angle) / PetscCosReal(PETSC_PI / 3) + 60;
+    const PetscReal h = 400, z = b.surface - b.depth + h,
+      L = 1.2 * (h + 50) * PetscTanReal(b.angle) / PetscCosReal(PETSC_PI / 3) + 60;
     const PetscInt  N = 1500;
     PetscInt        inside = 0;
     for (PetscInt i = 0; i < N; ++i)
@@ -173,12 +181,14 @@ static void CheckAreas(void)
         const PetscReal x[3] = {b.axis[0] - L + 2 * L * (i + 0.5) / N, b.axis[1] - L + 2 * L * (j + 0.5) / N, z};
         if (Gap(&b, x) <= 0) inside++;
       }
-    Report("berkovich R = 50, h = 400: area vs counting a 1500^2 grid", PetscAbsReal(IndIndenterArea(&b, h) - inside * 4 * L * L / (N * N)) / IndIndenterArea(&b, h), 1e-3);
+    Report("berkovich R = 50, h = 400: area vs counting a 1500^2 grid", PetscAbsReal(IndIndenterArea(&b,
+      h) - inside * 4 * L * L / (N * N)) / IndIndenterArea(&b, h), 1e-3);
   }
   MakeIndenter(IND_INDENTER_CONE, 50.0, &c);
   {
     const PetscReal ht = 50 * (1 - PetscSinReal(c.angle));
-    Report("cone R = 50: A continuous where the tip meets the mantle", PetscAbsReal(IndIndenterArea(&c, ht * (1 + 1e-12)) - IndIndenterArea(&c, ht * (1 - 1e-12))) / IndIndenterArea(&c, ht), 1e-9);
+    Report("cone R = 50: A continuous where the tip meets the mantle", PetscAbsReal(IndIndenterArea(&c,
+      ht * (1 + 1e-12)) - IndIndenterArea(&c, ht * (1 - 1e-12))) / IndIndenterArea(&c, ht), 1e-9);
   }
   MakeIndenter(IND_INDENTER_FLAT, 300.0, &f);
   Report("flat punch: A = pi a^2", PetscAbsReal(IndIndenterArea(&f, 5) - PETSC_PI * 9e4) / (PETSC_PI * 9e4), 1e-15);
@@ -219,13 +229,15 @@ static void CheckProjection(void)
         PetscReal tp[3] = {tau[0], tau[1], tau[2]}, tm[3] = {tau[0], tau[1], tau[2]};
         tp[c] += h;
         tm[c] -= h;
-        if (IndBipotentialProject(mu, tp, rp, NULL) != st || IndBipotentialProject(mu, tm, rm, NULL) != st) smooth = PETSC_FALSE;
+        if (IndBipotentialProject(mu, tp, rp, NULL) != st || IndBipotentialProject(mu, tm, rm,
+          NULL) != st) smooth = PETSC_FALSE;
         for (int i = 0; i < 3; ++i) Dfd[3 * i + c] = (rp[i] - rm[i]) / (2 * h);
       }
       if (smooth)
         for (int i = 0; i < 9; ++i) worst_D = PetscMax(worst_D, PetscAbsReal(Dfd[i] - D[i]));
     }
-    if (mu == 0) worst_mu0 = PetscMax(worst_mu0, PetscAbsReal(r[0] - PetscMax(tau[0], 0.0)) + PetscAbsReal(r[1]) + PetscAbsReal(r[2]));
+    if (mu == 0) worst_mu0 = PetscMax(worst_mu0, PetscAbsReal(r[0] - PetscMax(tau[0],
+      0.0)) + PetscAbsReal(r[1]) + PetscAbsReal(r[2]));
   }
   Report("projection: r in the Coulomb cone", PetscMax(worst_cone, 0.0), 1e-15);
   Report("projection: idempotent", worst_idem, 1e-15);
@@ -239,7 +251,8 @@ static void CheckProjection(void)
     const PetscReal r[3] = {1, 0.1, 0}, dut[2] = {0.5, 0}, mu = 0.3, rho = 2;
     PetscReal       tau[3];
     IndBipotentialPredictor(mu, rho, r, -0.25, dut, tau);
-    Report("predictor: tau = r - rho (du_t + (g + mu |du_t|) n)", PetscAbsReal(tau[0] - (1 - 2 * (-0.25 + 0.15))) + PetscAbsReal(tau[1] - (0.1 - 1)) + PetscAbsReal(tau[2]), 1e-15);
+    Report("predictor: tau = r - rho (du_t + (g + mu |du_t|) n)",
+      PetscAbsReal(tau[0] - (1 - 2 * (-0.25 + 0.15))) + PetscAbsReal(tau[1] - (0.1 - 1)) + PetscAbsReal(tau[2]), 1e-15);
   }
 }
 

@@ -1,4 +1,5 @@
-static const char help[] = "Unit tests of the semi-smooth Newton contact: which rows a node gets in each state, and the\n"
+static const char help[] = "Unit tests of the semi-smooth Newton contact: which rows a node gets in each state, and "
+  "the\n"
                             "node's complementarity function against its derivative.\n";
 
 #include "contact_node.h"
@@ -71,13 +72,15 @@ static void CheckRows(void)
     const PetscReal Z[9] = {0};
     IndContactNewtonRows(Z, Z, 2, NC, diag, K, out);
     worst = 0;
-    for (int j = 0; j < NC; ++j) worst = PetscMax(worst, PetscAbsReal(out[NC + j]) + PetscAbsReal(out[j] - K[j]) + PetscAbsReal(out[2 * NC + j] - K[2 * NC + j]));
+    for (int j = 0; j < NC; ++j) worst = PetscMax(worst,
+      PetscAbsReal(out[NC + j]) + PetscAbsReal(out[j] - K[j]) + PetscAbsReal(out[2 * NC + j] - K[2 * NC + j]));
     Report("a held component's row carries no multiplier", worst, 0);
   }
 }
 
 /* One contact node of a rigid indenter, alone: what IndContactNodeSolve needs. */
-static void MakeNode(IndIndenterType type, PetscReal radius, PetscReal mu, struct _p_IndContact *c, PetscReal X[3], PetscReal Uc[3], PetscReal *kdiag)
+static void MakeNode(IndIndenterType type, PetscReal radius, PetscReal mu, struct _p_IndContact *c, PetscReal X[3],
+  PetscReal Uc[3], PetscReal *kdiag)
 {
   PetscMemzero(c, sizeof(*c));
   c->indenter.type   = type;
@@ -130,13 +133,15 @@ static void CheckNodeDerivative(const char *name, IndIndenterType type, PetscRea
       IndContactNodeSolve(&c, 0, up, L, &a);
       IndContactNodeSolve(&c, 0, um, L, &z);
       if (a.status != ns.status || z.status != ns.status) continue; /* across a kink */
-      for (int r = 0; r < 3; ++r) worst_u = PetscMax(worst_u, PetscAbsReal(B[3 * r + b] + (a.f[r] - z.f[r]) / (2 * h)) / (1 + PetscAbsReal(B[3 * r + b])));
+      for (int r = 0; r < 3; ++r) worst_u = PetscMax(worst_u,
+        PetscAbsReal(B[3 * r + b] + (a.f[r] - z.f[r]) / (2 * h)) / (1 + PetscAbsReal(B[3 * r + b])));
       /* d f / d lambda = Q D Q^T */
       for (int r = 0; r < 3; ++r)
         for (int s = 0; s < 3; ++s) {
           P[3 * r + s] = 0;
           for (int k = 0; k < 3; ++k) {
-            const PetscReal Q[3][3] = {{ns.n[0], ns.t1[0], ns.t2[0]}, {ns.n[1], ns.t1[1], ns.t2[1]}, {ns.n[2], ns.t1[2], ns.t2[2]}};
+            const PetscReal Q[3][3] = {{ns.n[0], ns.t1[0], ns.t2[0]}, {ns.n[1], ns.t1[1], ns.t2[1]}, {ns.n[2],
+              ns.t1[2], ns.t2[2]}};
             for (int m = 0; m < 3; ++m) P[3 * r + s] += Q[r][k] * ns.D[3 * k + m] * Q[s][m];
           }
         }
@@ -148,7 +153,8 @@ static void CheckNodeDerivative(const char *name, IndIndenterType type, PetscRea
       for (int r = 0; r < 3; ++r) worst_l = PetscMax(worst_l, PetscAbsReal(P[3 * r + b] - (a.f[r] - z.f[r]) / (2 * h)));
     }
   }
-  snprintf(what, sizeof(what), "%s: d f/d lambda = Q D Q^T (open %d, stick %d, slip %d)", name, (int)count[0], (int)count[1], (int)count[2]);
+  snprintf(what, sizeof(what), "%s: d f/d lambda = Q D Q^T (open %d, stick %d, slip %d)", name, (int)count[0],
+    (int)count[1], (int)count[2]);
   Report(what, worst_l, 1e-7);
   snprintf(what, sizeof(what), "%s: d f/d u, frame rotation included", name);
   Report(what, worst_u, 1e-5);
@@ -185,7 +191,8 @@ static void CheckOneNodeNewton(void)
       for (int a = 0; a < 3; ++a)
         for (int b = 0; b < 3; ++b)
           for (int m = 0; m < 3; ++m) {
-            const PetscReal Q[3][3] = {{ns.n[0], ns.t1[0], ns.t2[0]}, {ns.n[1], ns.t1[1], ns.t2[1]}, {ns.n[2], ns.t1[2], ns.t2[2]}};
+            const PetscReal Q[3][3] = {{ns.n[0], ns.t1[0], ns.t2[0]}, {ns.n[1], ns.t1[1], ns.t2[1]}, {ns.n[2],
+              ns.t1[2], ns.t2[2]}};
             for (int q = 0; q < 3; ++q) P[3 * a + b] += Q[a][m] * ns.D[3 * m + q] * Q[b][q];
           }
       J = (1 - P[8]) * K[2] + B[8];

@@ -1,4 +1,5 @@
-static const char help[] = "Unit test of the adaptive load stepping: exact end point, cutback, growth, and the errors.\n";
+static const char help[] = "Unit test of the adaptive load stepping: exact end point, cutback, growth, and the "
+  "errors.\n";
 
 #include "ind_loadpath.h"
 
@@ -23,13 +24,15 @@ int main(int argc, char **argv)
   /* A failure halves the increment; easy steps grow it by 1.5 up to the initial increment. */
   PetscCall(IndLoadPathSetFromOptions(PETSC_COMM_SELF, PETSC_FALSE, &lp));
   PetscCall(IndLoadPathReject(&lp, PETSC_COMM_SELF, "test"));
-  EXPECT(PetscAbsReal(IndLoadPathTarget(&lp) - 0.05) < 1e-15, "after a cutback the target is %g, not 0.05", (double)IndLoadPathTarget(&lp));
+  EXPECT(PetscAbsReal(IndLoadPathTarget(&lp) - 0.05) < 1e-15, "after a cutback the target is %g, not 0.05",
+    (double)IndLoadPathTarget(&lp));
   IndLoadPathAccept(&lp, 2);
   EXPECT(PetscAbsReal(lp.dt - 0.075) < 1e-15, "an easy step grows 0.05 to %g, not 0.075", (double)lp.dt);
   IndLoadPathAccept(&lp, 2);
   EXPECT(PetscAbsReal(lp.dt - 0.1) < 1e-15, "growth is capped at the initial increment: %g", (double)lp.dt);
   IndLoadPathAccept(&lp, 20);
-  EXPECT(PetscAbsReal(lp.dt - 0.1) < 1e-15 && lp.cutbacks == 1 && lp.cutbacks_in_a_row == 0, "a hard step keeps the increment");
+  EXPECT(PetscAbsReal(lp.dt - 0.1) < 1e-15 && lp.cutbacks == 1 && lp.cutbacks_in_a_row == 0,
+    "a hard step keeps the increment");
 
   /* Ten cutbacks in a row reach -load_min_increment (initial / 1024); the eleventh is an error. */
   PetscCall(IndLoadPathSetFromOptions(PETSC_COMM_SELF, PETSC_FALSE, &lp));
@@ -58,8 +61,11 @@ int main(int argc, char **argv)
     n = 0;
     while (!IndLoadPathDone(&lp)) {
       const PetscReal t = IndLoadPathTarget(&lp);
-      EXPECT(n < 10 && PetscAbsReal(t - t_expect[n]) < 1e-14 && PetscAbsReal(IndLoadPathFactor(&lp, t) - l_expect[n]) < 1e-14, "program step %" PetscInt_FMT ": t %g, lambda %g", n, (double)t, (double)IndLoadPathFactor(&lp, t));
-      EXPECT(IndLoadPathUnloading(&lp, t) == (n >= 6 ? PETSC_TRUE : PETSC_FALSE), "unloading flag at step %" PetscInt_FMT, n);
+      EXPECT(n < 10 && PetscAbsReal(t - t_expect[n]) < 1e-14 && PetscAbsReal(IndLoadPathFactor(&lp,
+        t) - l_expect[n]) < 1e-14, "program step %" PetscInt_FMT ": t %g, lambda %g", n, (double)t,
+        (double)IndLoadPathFactor(&lp, t));
+      EXPECT(IndLoadPathUnloading(&lp, t) == (n >= 6 ? PETSC_TRUE : PETSC_FALSE),
+        "unloading flag at step %" PetscInt_FMT, n);
       IndLoadPathAccept(&lp, 10);
       n++;
     }
@@ -83,10 +89,12 @@ int main(int argc, char **argv)
     const PetscReal t_expect[] = {0.5, 1.0, 1.125, 1.3125, 1.59375, 1.6640625, 1.98046875, 2.0};
     for (n = 0; n < 8; ++n) {
       const PetscReal t = IndLoadPathTarget(&lp);
-      EXPECT(PetscAbsReal(t - t_expect[n]) < 1e-14, "unloading program step %" PetscInt_FMT ": t %.17g, not %g", n, (double)t, (double)t_expect[n]);
+      EXPECT(PetscAbsReal(t - t_expect[n]) < 1e-14, "unloading program step %" PetscInt_FMT ": t %.17g, not %g", n,
+        (double)t, (double)t_expect[n]);
       if (n == 4) {
         PetscCall(IndLoadPathReject(&lp, PETSC_COMM_SELF, "test"));
-        EXPECT(PetscAbsReal(IndLoadPathTarget(&lp) - 1.453125) < 1e-14, "cut unloading step: target %g", (double)IndLoadPathTarget(&lp));
+        EXPECT(PetscAbsReal(IndLoadPathTarget(&lp) - 1.453125) < 1e-14, "cut unloading step: target %g",
+          (double)IndLoadPathTarget(&lp));
       }
       IndLoadPathAccept(&lp, 50);
     }
@@ -107,12 +115,15 @@ int main(int argc, char **argv)
       PetscReal t;
       if (n == 3) PetscCall(IndLoadPathReject(&lp, PETSC_COMM_SELF, "test")); /* the slide's 0.25 -> 0.125 */
       t = IndLoadPathTarget(&lp);
-      EXPECT(n < 9 && PetscAbsReal(t - t_expect[n]) < 1e-14 && PetscAbsReal(IndLoadPathFactor(&lp, t) - l_expect[n]) < 1e-14 &&
+      EXPECT(n < 9 && PetscAbsReal(t - t_expect[n]) < 1e-14 && PetscAbsReal(IndLoadPathFactor(&lp,
+        t) - l_expect[n]) < 1e-14 &&
                PetscAbsReal(IndLoadPathScratchFraction(&lp, t) - f_expect[n]) < 1e-14,
              "scratch program step %" PetscInt_FMT ": t %.17g, lambda %g, slid %g", n, (double)t,
              (double)IndLoadPathFactor(&lp, t), (double)IndLoadPathScratchFraction(&lp, t));
-      EXPECT(IndLoadPathScratching(&lp, t) == (n >= 2 && n <= 6 ? PETSC_TRUE : PETSC_FALSE), "scratching flag at %" PetscInt_FMT, n);
-      EXPECT(IndLoadPathUnloading(&lp, t) == (n >= 7 ? PETSC_TRUE : PETSC_FALSE), "unloading flag at %" PetscInt_FMT, n);
+      EXPECT(IndLoadPathScratching(&lp, t) == (n >= 2 && n <= 6 ? PETSC_TRUE : PETSC_FALSE),
+        "scratching flag at %" PetscInt_FMT, n);
+      EXPECT(IndLoadPathUnloading(&lp, t) == (n >= 7 ? PETSC_TRUE : PETSC_FALSE), "unloading flag at %" PetscInt_FMT,
+        n);
       IndLoadPathAccept(&lp, 2);
       n++;
     }

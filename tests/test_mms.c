@@ -1,6 +1,8 @@
-static const char help[] = "Manufactured solution with body force on the unit cube: L2 error and its rate over refinements.\n"
+static const char help[] = "Manufactured solution with body force on the unit cube: L2 error and its rate over "
+  "refinements.\n"
                            "  -mms_levels n      number of meshes (each refines the previous once)\n"
-                           "  -mms_meshes a,b,c  or a series of mesh files whose element size halves from one to the next\n"
+                           "  -mms_meshes a,b,c  or a series of mesh files whose element size halves from one to the "
+                             "next\n"
                            "  -mms_rate r        expected rate, -mms_rate_tol its tolerance\n";
 
 #include "ind_app.h"
@@ -20,7 +22,8 @@ static PetscErrorCode Exact(const PetscReal x[3], PetscReal u[3], void *ctx)
   return PETSC_SUCCESS;
 }
 
-static PetscErrorCode ExactProject(PetscInt dim, PetscReal t, const PetscReal x[], PetscInt Nc, PetscScalar *u, void *ctx)
+static PetscErrorCode ExactProject(PetscInt dim, PetscReal t, const PetscReal x[], PetscInt Nc, PetscScalar *u,
+  void *ctx)
 {
   PetscReal v[3];
   (void)dim;
@@ -69,7 +72,8 @@ int main(int argc, char **argv)
   PetscCall(PetscOptionsGetReal(NULL, NULL, "-mms_rate_tol", &rate_tol, NULL));
   PetscCall(PetscOptionsGetStringArray(NULL, NULL, "-mms_meshes", meshes, &nmeshes, &series));
   if (series) levels = nmeshes;
-  PetscCheck(levels >= 2 && levels <= 16, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-mms_levels must lie in [2, 16]");
+  PetscCheck(levels >= 2 && levels <= 16, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE,
+    "-mms_levels must lie in [2, 16]");
   for (PetscInt l = 0; l < levels; ++l) {
     IndApp   app;
     Lame     lame;
@@ -88,21 +92,27 @@ int main(int argc, char **argv)
     lame.lambda = app->mats->mat[0].kappa - 2.0 * lame.mu / 3.0;
     PetscCall(IndAppSetBodyForce(app, BodyForce, &lame));
     for (PetscInt r = 0; r < app->mesh->nregions; ++r)
-      if (app->mesh->regions[r].dim == 2) PetscCall(IndAppAddBoundaryFunction(app, app->mesh->regions[r].name, 7, Exact, NULL));
+      if (app->mesh->regions[r].dim == 2) PetscCall(IndAppAddBoundaryFunction(app, app->mesh->regions[r].name, 7,
+        Exact, NULL));
     PetscCall(IndAppRun(app));
     PetscCall(DMComputeL2Diff(app->disc->dm, 0.0, funcs, NULL, app->U, &err[l]));
     PetscCall(VecGetSize(app->U, &ndof));
     h[l] = PetscPowReal(0.5, (PetscReal)l);
-    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "level %" PetscInt_FMT ": %8" PetscInt_FMT " dofs  L2 error %.4e", l, ndof, (double)err[l]));
-    if (l) PetscCall(PetscPrintf(PETSC_COMM_WORLD, "  rate %.3f", (double)(PetscLogReal(err[l - 1] / err[l]) / PetscLogReal(h[l - 1] / h[l]))));
+    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "level %" PetscInt_FMT ": %8" PetscInt_FMT " dofs  L2 error %.4e", l,
+      ndof, (double)err[l]));
+    if (l) PetscCall(PetscPrintf(PETSC_COMM_WORLD, "  rate %.3f",
+      (double)(PetscLogReal(err[l - 1] / err[l]) / PetscLogReal(h[l - 1] / h[l]))));
     PetscCall(PetscPrintf(PETSC_COMM_WORLD, "\n"));
     PetscCall(IndAppDestroy(&app));
   }
   {
     /* The last pair is the closest to the asymptotic regime. */
-    const PetscReal last = PetscLogReal(err[levels - 2] / err[levels - 1]) / PetscLogReal(h[levels - 2] / h[levels - 1]);
-    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "final rate %.3f, expected %.2f +- %.2f\n", (double)last, (double)rate, (double)rate_tol));
-    PetscCheck(PetscAbsReal(last - rate) <= rate_tol, PETSC_COMM_WORLD, PETSC_ERR_NOT_CONVERGED, "L2 convergence rate %.3f is not %.2f +- %.2f", (double)last, (double)rate, (double)rate_tol);
+    const PetscReal last = PetscLogReal(err[levels - 2] / err[levels - 1]) / PetscLogReal(h[levels - 2] / h[levels
+      - 1]);
+    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "final rate %.3f, expected %.2f +- %.2f\n", (double)last, (double)rate,
+      (double)rate_tol));
+    PetscCheck(PetscAbsReal(last - rate) <= rate_tol, PETSC_COMM_WORLD, PETSC_ERR_NOT_CONVERGED,
+      "L2 convergence rate %.3f is not %.2f +- %.2f", (double)last, (double)rate, (double)rate_tol);
   }
   PetscCall(PetscFinalize());
   return 0;

@@ -64,8 +64,11 @@ int main(int argc, char **argv)
         H  = 1000 * 5000 / A;
         Er = 1000 * PetscSqrtReal(PETSC_PI) / (2 * 1.034) * S / PetscSqrtReal(A);
         worst_fit = PetscMax(worst_fit, PetscMax(PetscAbsReal(r.m / m - 1), PetscAbsReal(r.h_f - hf) / hmax));
-        worst     = PetscMax(worst, PetscMax(PetscAbsReal(r.S / S - 1), PetscMax(PetscAbsReal(r.H / H - 1), PetscAbsReal(r.E_r / Er - 1))));
-        if (a == 1 && c == 1) printf("  e.g. h_max %g nm, h_f %g nm, m %g: S %.6g uN/nm, h_c %.6g nm, A %.6g nm^2, H %.6g GPa, E_r %.6g GPa (%d points fitted)\n", (double)hmax, (double)hf, (double)m, (double)r.S, (double)r.h_c, (double)r.A, (double)r.H, (double)r.E_r, (int)r.npoints);
+        worst     = PetscMax(worst, PetscMax(PetscAbsReal(r.S / S - 1), PetscMax(PetscAbsReal(r.H / H - 1),
+          PetscAbsReal(r.E_r / Er - 1))));
+        if (a == 1 && c == 1) printf("  e.g. h_max %g nm, h_f %g nm, m %g: S %.6g uN/nm, h_c %.6g nm, A %.6g nm^2, H "
+          "%.6g GPa, E_r %.6g GPa (%d points fitted)\n", (double)hmax, (double)hf, (double)m, (double)r.S,
+          (double)r.h_c, (double)r.A, (double)r.H, (double)r.E_r, (int)r.npoints);
       }
   }
   Report("fitted m and h_f", worst_fit, 1e-8);
@@ -80,7 +83,8 @@ int main(int argc, char **argv)
     Report("rigid indenter: E = (1 - nu^2) E_r", PetscAbsReal(E / ((1 - 0.09) * Er) - 1), 1e-14);
     p.E_indenter = 1141;
     IndOPFromArea(&p, &fit, 1e6, &H, &Er, &E);
-    Report("diamond indenter: 1/E_r = (1-nu^2)/E + (1-nu_i^2)/E_i", PetscAbsReal(1 / Er - ((1 - 0.09) / E + (1 - 0.0049) / 1141)) * Er, 1e-14);
+    Report("diamond indenter: 1/E_r = (1-nu^2)/E + (1-nu_i^2)/E_i",
+      PetscAbsReal(1 / Er - ((1 - 0.09) / E + (1 - 0.0049) / 1141)) * Er, 1e-14);
     Report("H = P_max / A", PetscAbsReal(H - 1000 * 1000 / 1e6), 1e-14);
   }
   {

@@ -1,6 +1,8 @@
 static const char help[] = "Patch test: an affine displacement prescribed on the whole boundary is reproduced inside.\n"
-                           "  -patch_uniaxial e  instead, take the boundary conditions from the options (symmetry or roller\n"
-                           "                     planes at x = y = z = 0, top pushed down by e at z = 1) and check the\n"
+                           "  -patch_uniaxial e  instead, take the boundary conditions from the options (symmetry or "
+                             "roller\n"
+                           "                     planes at x = y = z = 0, top pushed down by e at z = 1) and check "
+                             "the\n"
                            "                     uniform uniaxial-stress field u = (nu e x, nu e y, -e z)\n";
 
 #include "ind_app.h"
@@ -26,7 +28,8 @@ static PetscErrorCode Affine(const PetscReal x[3], PetscReal u[3], void *ctx)
   return PETSC_SUCCESS;
 }
 
-static PetscErrorCode AffineProject(PetscInt dim, PetscReal t, const PetscReal x[], PetscInt Nc, PetscScalar *u, void *ctx)
+static PetscErrorCode AffineProject(PetscInt dim, PetscReal t, const PetscReal x[], PetscInt Nc, PetscScalar *u,
+  void *ctx)
 {
   PetscReal v[3];
   (void)dim;
@@ -63,7 +66,8 @@ int main(int argc, char **argv)
   c.nu = app->mats->mat[0].poisson;
   if (!c.uniaxial)
     for (PetscInt r = 0; r < app->mesh->nregions; ++r)
-      if (app->mesh->regions[r].dim == 2) PetscCall(IndAppAddBoundaryFunction(app, app->mesh->regions[r].name, 7, Affine, &c));
+      if (app->mesh->regions[r].dim == 2) PetscCall(IndAppAddBoundaryFunction(app, app->mesh->regions[r].name, 7,
+        Affine, &c));
   PetscCall(IndAppRun(app));
 
   PetscCall(VecDuplicate(app->U, &exact));
@@ -71,8 +75,10 @@ int main(int argc, char **argv)
   PetscCall(VecNorm(exact, NORM_INFINITY, &norm));
   PetscCall(VecAXPY(exact, -1.0, app->U));
   PetscCall(VecNorm(exact, NORM_INFINITY, &err));
-  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "patch test: max nodal error %.3e, relative %.3e (tolerance %.1e)\n", (double)err, (double)(err / norm), (double)tol));
-  PetscCheck(err / norm <= tol, PETSC_COMM_WORLD, PETSC_ERR_NOT_CONVERGED, "Patch test failed: relative nodal error %.3e > %.1e", (double)(err / norm), (double)tol);
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "patch test: max nodal error %.3e, relative %.3e (tolerance %.1e)\n",
+    (double)err, (double)(err / norm), (double)tol));
+  PetscCheck(err / norm <= tol, PETSC_COMM_WORLD, PETSC_ERR_NOT_CONVERGED,
+    "Patch test failed: relative nodal error %.3e > %.1e", (double)(err / norm), (double)tol);
   PetscCall(VecDestroy(&exact));
 
   { /* The node positions behind the rigid-body modes agree with PETSc's projection of x. */
@@ -86,7 +92,8 @@ int main(int argc, char **argv)
     PetscCall(VecAXPY(x, -1.0, nodes));
     PetscCall(VecNorm(x, NORM_INFINITY, &nerr));
     PetscCall(PetscPrintf(PETSC_COMM_WORLD, "node coordinates: max error %.3e relative\n", (double)(nerr / nnorm)));
-    PetscCheck(nerr <= 1e-12 * nnorm, PETSC_COMM_WORLD, PETSC_ERR_PLIB, "Node coordinates differ from the projection of x by %.3e", (double)nerr);
+    PetscCheck(nerr <= 1e-12 * nnorm, PETSC_COMM_WORLD, PETSC_ERR_PLIB,
+      "Node coordinates differ from the projection of x by %.3e", (double)nerr);
     PetscCall(VecDestroy(&x));
     PetscCall(VecDestroy(&nodes));
   }

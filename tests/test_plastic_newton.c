@@ -1,14 +1,20 @@
-static const char help[] = "Newton on a non-proportional plastic path: a cube clamped at z = 0 has its top face pulled up\n"
+static const char help[] = "Newton on a non-proportional plastic path: a cube clamped at z = 0 has its top face "
+  "pulled up\n"
                            "(tension), then slid sideways (shear) with the tension held. Records the residual history\n"
                            "of every step and asserts the order of convergence in the plastic steps; at the last step\n"
                            "it compares the assembled Jacobian with central differences of the residual.\n"
                            "  -newton_tension a, -newton_shear b      top displacement at the end of each phase\n"
                            "  -newton_steps n1,n2                      steps per phase\n"
-                           "  -newton_expect quadratic|linear          the convergence to assert (linear: -plastic_tangent elastic)\n"
-                           "  -newton_order q                          least order accepted for quadratic (default 1.8)\n"
-                           "  -newton_fd_tol t                         largest relative Frobenius error of the Jacobian (default 1e-6; < 0 skips)\n"
-                           "  -newton_fd_h h                           difference step relative to max |U| (default 1e-8: small enough that\n"
-                           "                                           few quadrature points lie within it of the yield surface's kink)\n";
+                           "  -newton_expect quadratic|linear          the convergence to assert (linear: "
+                             "-plastic_tangent elastic)\n"
+                           "  -newton_order q                          least order accepted for quadratic (default "
+                             "1.8)\n"
+                           "  -newton_fd_tol t                         largest relative Frobenius error of the "
+                             "Jacobian (default 1e-6; < 0 skips)\n"
+                           "  -newton_fd_h h                           difference step relative to max |U| (default "
+                             "1e-8: small enough that\n"
+                           "                                           few quadrature points lie within it of the "
+                             "yield surface's kink)\n";
 
 #include "ind_app.h"
 
@@ -155,27 +161,40 @@ int main(int argc, char **argv)
         r.converged = sr.converged;
         r.plastic   = app->solver->nplastic;
       } else PetscCall(IndAppSolveStep(app, 1.0, &r));
-      PetscCheck(r.converged, PETSC_COMM_WORLD, PETSC_ERR_NOT_CONVERGED, "%s step %" PetscInt_FMT ": Newton failed (%s)", phase ? "shear" : "tension", k, SNESConvergedReasons[r.reason]);
+      PetscCheck(r.converged, PETSC_COMM_WORLD, PETSC_ERR_NOT_CONVERGED,
+        "%s step %" PetscInt_FMT ": Newton failed (%s)", phase ? "shear" : "tension", k,
+        SNESConvergedReasons[r.reason]);
       q = ConvergenceOrder(&path);
       total_its += r.newton;
-      PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s step %" PetscInt_FMT ": %" PetscInt_FMT " Newton iterations, %" PetscInt_FMT " plastic points, order %.2f; residual/initial:", phase ? "shear" : "tension", k, r.newton, r.plastic, (double)q));
-      for (PetscInt i = 0; i < path.n; ++i) PetscCall(PetscPrintf(PETSC_COMM_WORLD, " %.1e", (double)(path.norms[i] / path.norms[0])));
+      PetscCall(PetscPrintf(PETSC_COMM_WORLD,
+        "%s step %" PetscInt_FMT ": %" PetscInt_FMT " Newton iterations, %" PetscInt_FMT " plastic points, order "
+        "%.2f; residual/initial:", phase ? "shear" : "tension", k, r.newton, r.plastic, (double)q));
+      for (PetscInt i = 0; i < path.n; ++i) PetscCall(PetscPrintf(PETSC_COMM_WORLD, " %.1e",
+        (double)(path.norms[i] / path.norms[0])));
       PetscCall(PetscPrintf(PETSC_COMM_WORLD, "\n"));
       if (r.plastic > 0 && q > 0) {
         plastic_steps++;
         worst_order = PetscMin(worst_order, q);
-        if (quadratic) PetscCheck(q >= min_order, PETSC_COMM_WORLD, PETSC_ERR_NOT_CONVERGED, "Newton order %.2f < %.2f in a plastic step: the tangent is not consistent", (double)q, (double)min_order);
-        else PetscCheck(q < 1.3, PETSC_COMM_WORLD, PETSC_ERR_NOT_CONVERGED, "Newton order %.2f: expected linear convergence with this tangent", (double)q);
+        if (quadratic) PetscCheck(q >= min_order, PETSC_COMM_WORLD, PETSC_ERR_NOT_CONVERGED,
+          "Newton order %.2f < %.2f in a plastic step: the tangent is not consistent", (double)q, (double)min_order);
+        else PetscCheck(q < 1.3, PETSC_COMM_WORLD, PETSC_ERR_NOT_CONVERGED,
+          "Newton order %.2f: expected linear convergence with this tangent", (double)q);
       }
       if (last && fd_tol >= 0) {
         PetscReal err;
         PetscCall(JacobianError(app, fd_h, &err));
-        PetscCall(PetscPrintf(PETSC_COMM_WORLD, "Jacobian vs central differences of the residual: ||J - J_fd||_F / ||J||_F = %.3e (tolerance %.1e)\n", (double)err, (double)fd_tol));
-        PetscCheck(err <= fd_tol, PETSC_COMM_WORLD, PETSC_ERR_NOT_CONVERGED, "Jacobian differs from the residual's derivative by %.3e relative", (double)err);
+        PetscCall(PetscPrintf(PETSC_COMM_WORLD,
+          "Jacobian vs central differences of the residual: ||J - J_fd||_F / ||J||_F = %.3e (tolerance %.1e)\n",
+          (double)err, (double)fd_tol));
+        PetscCheck(err <= fd_tol, PETSC_COMM_WORLD, PETSC_ERR_NOT_CONVERGED,
+          "Jacobian differs from the residual's derivative by %.3e relative", (double)err);
       }
     }
-  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "non-proportional path: %" PetscInt_FMT " Newton iterations in all, %" PetscInt_FMT " plastic steps checked, lowest order %.2f (expected %s)\n", total_its, plastic_steps, (double)worst_order, expect));
-  PetscCheck(plastic_steps >= 2, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "Only %" PetscInt_FMT " plastic steps with enough iterations to measure an order", plastic_steps);
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD,
+    "non-proportional path: %" PetscInt_FMT " Newton iterations in all, %" PetscInt_FMT " plastic steps checked, "
+    "lowest order %.2f (expected %s)\n", total_its, plastic_steps, (double)worst_order, expect));
+  PetscCheck(plastic_steps >= 2, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG,
+    "Only %" PetscInt_FMT " plastic steps with enough iterations to measure an order", plastic_steps);
   PetscCall(IndAppDestroy(&app));
   PetscCall(PetscFinalize());
   return 0;

@@ -1,12 +1,16 @@
-static const char help[] = "Uniaxial stress in an elasto-plastic cube (rollers on x = 0, y = 0, z = 0; top face of height 1\n"
+static const char help[] = "Uniaxial stress in an elasto-plastic cube (rollers on x = 0, y = 0, z = 0; top face of "
+  "height 1\n"
                            "pulled to z = strain): after every accepted load step each cell's stress and accumulated\n"
                            "plastic strain must equal the closed form sigma = R(p) + H p, eps = sigma / E + p.\n"
                            "  -uni_strain e          axial strain at full load (must match -bc_displacement top:z=e)\n"
                            "  -uni_tol t             relative tolerance (default 1e-8)\n"
                            "  -uni_expect_cutbacks   fail unless the load stepping cut back at least once\n"
-                           "  -uni_cycle e1,e2,...   instead of -bc_displacement, drive the top face through these axial strains\n"
-                           "                         (piecewise linear from 0, -uni_segment_steps steps each) and compare with\n"
-                           "                         a one-dimensional return map of the same law: reverse yielding at X - R(p)\n";
+                           "  -uni_cycle e1,e2,...   instead of -bc_displacement, drive the top face through these "
+                             "axial strains\n"
+                           "                         (piecewise linear from 0, -uni_segment_steps steps each) and "
+                             "compare with\n"
+                           "                         a one-dimensional return map of the same law: reverse yielding "
+                             "at X - R(p)\n";
 
 #include "ind_app.h"
 
@@ -49,7 +53,8 @@ static PetscReal ClosedFormP(const IndMaterial *m, PetscReal eps)
 static PetscReal UniaxialUpdate(const IndMaterial *m, PetscReal eps, Uniaxial *st)
 {
   const IndPlasticParams *pp = &m->plastic;
-  const PetscReal         E = m->young, str = E * (eps - st->ep), q = PetscAbsReal(str - st->X), s = str >= st->X ? 1.0 : -1.0;
+  const PetscReal         E = m->young, str = E * (eps - st->ep), q = PetscAbsReal(str - st->X),
+    s = str >= st->X ? 1.0 : -1.0;
   PetscReal               lo = 0, hi, dp;
 
   if (q <= IndPlasticR(pp, st->p)) return str;
@@ -97,8 +102,13 @@ static PetscErrorCode CheckStep(IndApp app, const IndStepResult *step, void *ctx
   }
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &es, 1, MPIU_REAL, MPIU_MAX, app->comm));
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &ep, 1, MPIU_REAL, MPIU_MAX, app->comm));
-  PetscCall(PetscPrintf(app->comm, "  step %2" PetscInt_FMT " (load %.6f): strain %+.6e  expected sigma %+.10e GPa, p %.6e  max error: stress %.2e, p %.2e (relative)\n", c->checked + 1, (double)step->t, (double)eps, (double)sig, (double)p, (double)es, (double)ep));
-  PetscCheck(es <= c->tol && ep <= c->tol, app->comm, PETSC_ERR_NOT_CONVERGED, "Uniaxial plasticity: error stress %.3e, p %.3e above %.1e at load %g", (double)es, (double)ep, (double)c->tol, (double)step->t);
+  PetscCall(PetscPrintf(app->comm,
+    "  step %2" PetscInt_FMT " (load %.6f): strain %+.6e  expected sigma %+.10e GPa, p %.6e  max error: stress %.2e, "
+    "p %.2e (relative)\n", c->checked + 1, (double)step->t, (double)eps, (double)sig, (double)p, (double)es,
+    (double)ep));
+  PetscCheck(es <= c->tol && ep <= c->tol, app->comm, PETSC_ERR_NOT_CONVERGED,
+    "Uniaxial plasticity: error stress %.3e, p %.3e above %.1e at load %g", (double)es, (double)ep, (double)c->tol,
+    (double)step->t);
   c->worst_stress = PetscMax(c->worst_stress, es);
   c->worst_p      = PetscMax(c->worst_p, ep);
   c->checked++;
@@ -127,7 +137,9 @@ static PetscErrorCode RunCycle(IndApp app, Check *c, const PetscReal *targets, P
       c->eps = from + (targets[k] - from) * j / nseg;
       PetscCall(IndBCInvalidate(app->bc));
       PetscCall(IndAppSolveStep(app, 1.0, &r));
-      PetscCheck(r.converged, app->comm, PETSC_ERR_NOT_CONVERGED, "Cycle segment %" PetscInt_FMT " step %" PetscInt_FMT ": Newton failed (%s)", k, j, SNESConvergedReasons[r.reason]);
+      PetscCheck(r.converged, app->comm, PETSC_ERR_NOT_CONVERGED,
+        "Cycle segment %" PetscInt_FMT " step %" PetscInt_FMT ": Newton failed (%s)", k, j,
+        SNESConvergedReasons[r.reason]);
       PetscCall(CheckStep(app, &r, c));
     }
     from = targets[k];
@@ -152,11 +164,13 @@ int main(int argc, char **argv)
   PetscCall(PetscOptionsGetRealArray(NULL, NULL, "-uni_cycle", targets, &ntargets, &c.cyclic));
   PetscCall(PetscOptionsGetInt(NULL, NULL, "-uni_segment_steps", &nseg, NULL));
   if (c.cyclic) {
-    PetscCheck(ntargets > 0 && nseg > 0, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-uni_cycle needs strains and -uni_segment_steps > 0");
+    PetscCheck(ntargets > 0 && nseg > 0, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG,
+      "-uni_cycle needs strains and -uni_segment_steps > 0");
     for (PetscInt k = 0; k < ntargets; ++k) c.strain = PetscMax(c.strain, PetscAbsReal(targets[k]));
   } else PetscCheck(has_strain && c.strain > 0, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-uni_strain e > 0 is required");
   PetscCall(IndAppCreate(PETSC_COMM_WORLD, &app));
-  PetscCheck(app->mats->n == 1 && app->mats->mat[0].model == IND_MODEL_PLASTIC, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "Needs one elasto-plastic region");
+  PetscCheck(app->mats->n == 1 && app->mats->mat[0].model == IND_MODEL_PLASTIC, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG,
+    "Needs one elasto-plastic region");
   n = app->disc->ncell;
   PetscCall(PetscMalloc5(6 * n, &c.stress, 6 * n, &c.strain_avg, n, &c.p, n, &c.back, n, &c.yielding));
   if (c.cyclic) {
@@ -166,11 +180,17 @@ int main(int argc, char **argv)
     PetscCall(IndAppSetStepMonitor(app, CheckStep, &c));
     PetscCall(IndAppRun(app));
   }
-  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "uniaxial plasticity: %" PetscInt_FMT " steps checked (%" PetscInt_FMT " plastic, %" PetscInt_FMT " yielding in reverse), %" PetscInt_FMT " cutbacks; worst relative error stress %.3e, p %.3e (tolerance %.1e)\n", c.checked, c.plastic_steps, c.reverse_steps,
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD,
+    "uniaxial plasticity: %" PetscInt_FMT " steps checked (%" PetscInt_FMT " plastic, %" PetscInt_FMT " yielding in "
+    "reverse), %" PetscInt_FMT " cutbacks; worst relative error stress %.3e, p %.3e (tolerance %.1e)\n", c.checked,
+    c.plastic_steps, c.reverse_steps,
                         app->path.cutbacks, (double)c.worst_stress, (double)c.worst_p, (double)c.tol));
-  PetscCheck(c.plastic_steps > 0, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "The load never reached yield: the test checked nothing plastic");
-  PetscCheck(!c.cyclic || c.reverse_steps > 0, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "The cycle never yielded in reverse: the Bauschinger branch went unchecked");
-  PetscCheck(!expect_cutbacks || app->path.cutbacks > 0, PETSC_COMM_WORLD, PETSC_ERR_PLIB, "Expected the load stepping to cut back, it did not");
+  PetscCheck(c.plastic_steps > 0, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG,
+    "The load never reached yield: the test checked nothing plastic");
+  PetscCheck(!c.cyclic || c.reverse_steps > 0, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG,
+    "The cycle never yielded in reverse: the Bauschinger branch went unchecked");
+  PetscCheck(!expect_cutbacks || app->path.cutbacks > 0, PETSC_COMM_WORLD, PETSC_ERR_PLIB,
+    "Expected the load stepping to cut back, it did not");
   PetscCall(PetscFree5(c.stress, c.strain_avg, c.p, c.back, c.yielding));
   PetscCall(IndAppDestroy(&app));
   PetscCall(PetscFinalize());

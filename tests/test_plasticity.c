@@ -8,7 +8,8 @@
 #define CHECK_TOL(name, worst, tol) \
   do { \
     PetscCall(PetscPrintf(PETSC_COMM_SELF, "  %-58s worst %.2e (tol %.0e)\n", name, (double)(worst), (double)(tol))); \
-    PetscCheck((worst) <= (tol), PETSC_COMM_SELF, PETSC_ERR_PLIB, "%s: worst error %g exceeds %g", name, (double)(worst), (double)(tol)); \
+    PetscCheck((worst) <= (tol), PETSC_COMM_SELF, PETSC_ERR_PLIB, "%s: worst error %g exceeds %g", name, \
+      (double)(worst), (double)(tol)); \
   } while (0)
 
 /* E = 70 GPa, nu = 0.3 throughout. */
@@ -76,16 +77,20 @@ static PetscReal Equivalent(const PetscReal sigma[6], const PetscReal x[6])
   return PetscSqrtReal(1.5) * TensorNorm(eta);
 }
 
-static PetscErrorCode Update(const IndPlasticParams *m, const PetscReal eps[6], const IndPlasticState *old, IndPlasticState *st, PetscReal sigma[6], PetscReal D[36], PetscReal *dp)
+static PetscErrorCode Update(const IndPlasticParams *m, const PetscReal eps[6], const IndPlasticState *old,
+  IndPlasticState *st, PetscReal sigma[6], PetscReal D[36], PetscReal *dp)
 {
   PetscFunctionBeginUser;
-  PetscCheck(IndPlasticUpdate(m, eps, old, st, sigma, D, dp) == IND_PLASTIC_OK, PETSC_COMM_SELF, PETSC_ERR_NOT_CONVERGED, "IndPlasticUpdate did not converge at eps = [%g %g %g %g %g %g]", (double)eps[0], (double)eps[1], (double)eps[2], (double)eps[3], (double)eps[4], (double)eps[5]);
+  PetscCheck(IndPlasticUpdate(m, eps, old, st, sigma, D, dp) == IND_PLASTIC_OK, PETSC_COMM_SELF,
+    PETSC_ERR_NOT_CONVERGED, "IndPlasticUpdate did not converge at eps = [%g %g %g %g %g %g]", (double)eps[0],
+    (double)eps[1], (double)eps[2], (double)eps[3], (double)eps[4], (double)eps[5]);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 /* Strain-driven uniaxial stress: Newton on the lateral strain with the consistent tangent until
    sigma_yy = sigma_zz = 0 (they stay equal by symmetry). */
-static PetscErrorCode UniaxialStep(const IndPlasticParams *m, PetscReal exx, PetscReal *lat, const IndPlasticState *old, IndPlasticState *st, PetscReal sigma[6], PetscReal *dp)
+static PetscErrorCode UniaxialStep(const IndPlasticParams *m, PetscReal exx, PetscReal *lat,
+  const IndPlasticState *old, IndPlasticState *st, PetscReal sigma[6], PetscReal *dp)
 {
   PetscReal D[36];
 
@@ -95,7 +100,8 @@ static PetscErrorCode UniaxialStep(const IndPlasticParams *m, PetscReal exx, Pet
 
     PetscCall(Update(m, eps, old, st, sigma, D, dp));
     if (PetscAbsReal(sigma[1]) <= 1e-14 * PetscAbsReal(sigma[0])) break;
-    PetscCheck(k < 50, PETSC_COMM_SELF, PETSC_ERR_NOT_CONVERGED, "Lateral strain iteration stalls at exx = %g: sigma_yy = %g", (double)exx, (double)sigma[1]);
+    PetscCheck(k < 50, PETSC_COMM_SELF, PETSC_ERR_NOT_CONVERGED,
+      "Lateral strain iteration stalls at exx = %g: sigma_yy = %g", (double)exx, (double)sigma[1]);
     *lat -= sigma[1] / (D[7] + D[8]);
   }
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -132,7 +138,8 @@ static PetscErrorCode TestUniaxial(const char *name, const IndPlasticParams *m)
   memset(&one, 0, sizeof(one));
   PetscCall(UniaxialStep(m, emax, &lat1, &one, &one, sigma1, &dp));
   PetscCall(PetscSNPrintf(label, sizeof(label), "uniaxial %s: 1 step vs %d steps (sigma_xx, p)", name, nsteps));
-  CHECK_TOL(label, PetscMax(PetscAbsReal(sigma1[0] - sigma[0]) / PetscAbsReal(sigma[0]), PetscAbsReal(one.p - st.p) / st.p), 1e-10);
+  CHECK_TOL(label, PetscMax(PetscAbsReal(sigma1[0] - sigma[0]) / PetscAbsReal(sigma[0]),
+    PetscAbsReal(one.p - st.p) / st.p), 1e-10);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -145,7 +152,8 @@ static PetscErrorCode TestCycle(const char *name, const IndPlasticParams *m)
   IndPlasticState top, st, probe;
   const PetscReal emax = 0.01, E = Young(m), delta = 1e-9;
   const int       nsteps = 40;
-  PetscReal       lat = 0.0, lat_top, sigma[6], sigma_top, dp, X, pred, exx_rev, worst = 0.0, worst_onset = 0.0, prev_exx, prev_sigma = 0.0;
+  PetscReal       lat = 0.0, lat_top, sigma[6], sigma_top, dp, X, pred, exx_rev, worst = 0.0, worst_onset = 0.0,
+    prev_exx, prev_sigma = 0.0;
   PetscBool       reversed = PETSC_FALSE;
   char            label[128];
 
@@ -162,13 +170,15 @@ static PetscErrorCode TestCycle(const char *name, const IndPlasticParams *m)
   /* Sharp onset: single steps from the top state just before, at and just past exx_rev. */
   lat = lat_top;
   PetscCall(UniaxialStep(m, exx_rev + delta, &lat, &top, &probe, sigma, &dp));
-  PetscCheck(dp == 0.0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "%s: yielded in compression before the predicted onset (exx_rev + %g)", name, (double)delta);
+  PetscCheck(dp == 0.0, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+    "%s: yielded in compression before the predicted onset (exx_rev + %g)", name, (double)delta);
   lat = lat_top;
   PetscCall(UniaxialStep(m, exx_rev, &lat, &top, &probe, sigma, &dp));
   worst_onset = PetscAbsReal(sigma[0] - pred) / PetscAbsReal(pred);
   lat         = lat_top;
   PetscCall(UniaxialStep(m, exx_rev - delta, &lat, &top, &probe, sigma, &dp));
-  PetscCheck(dp > 0.0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "%s: no reverse yielding just past the predicted onset (exx_rev - %g)", name, (double)delta);
+  PetscCheck(dp > 0.0, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+    "%s: no reverse yielding just past the predicted onset (exx_rev - %g)", name, (double)delta);
 
   /* The cycle itself: the first plastic compression step must bracket exx_rev, every plastic one
      must sit on sigma_xx = H (2 p_max - p) - R(p). */
@@ -183,14 +193,18 @@ static PetscErrorCode TestCycle(const char *name, const IndPlasticParams *m)
       const PetscReal Xn = st.x[0] - st.x[1], closed = m->H * (2.0 * top.p - st.p) - IndPlasticR(m, st.p);
 
       if (!reversed) {
-        PetscCheck(prev_exx > exx_rev && exx < exx_rev, PETSC_COMM_SELF, PETSC_ERR_PLIB, "%s: first reverse plastic step at exx = %g, previous %g, predicted onset %g", name, (double)exx, (double)prev_exx, (double)exx_rev);
-        PetscCheck(prev_sigma >= pred, PETSC_COMM_SELF, PETSC_ERR_PLIB, "%s: elastic unloading reached %g below the reverse yield stress %g", name, (double)prev_sigma, (double)pred);
+        PetscCheck(prev_exx > exx_rev && exx < exx_rev, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+          "%s: first reverse plastic step at exx = %g, previous %g, predicted onset %g", name, (double)exx,
+          (double)prev_exx, (double)exx_rev);
+        PetscCheck(prev_sigma >= pred, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+          "%s: elastic unloading reached %g below the reverse yield stress %g", name, (double)prev_sigma, (double)pred);
         reversed = PETSC_TRUE;
       }
       worst = PetscMax(worst, PetscAbsReal(sigma[0] - (Xn - IndPlasticR(m, st.p))) / PetscAbsReal(sigma[0]));
       worst = PetscMax(worst, PetscAbsReal(sigma[0] - closed) / PetscAbsReal(sigma[0]));
     } else {
-      PetscCheck(!reversed, PETSC_COMM_SELF, PETSC_ERR_PLIB, "%s: elastic step during monotonic compression at exx = %g", name, (double)exx);
+      PetscCheck(!reversed, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+        "%s: elastic step during monotonic compression at exx = %g", name, (double)exx);
       /* elastic unloading from the top state */
       worst = PetscMax(worst, PetscAbsReal(sigma[0] - (sigma_top + E * (exx - emax))) / PetscAbsReal(sigma_top));
     }
@@ -198,7 +212,9 @@ static PetscErrorCode TestCycle(const char *name, const IndPlasticParams *m)
     prev_sigma = sigma[0];
   }
   PetscCheck(reversed, PETSC_COMM_SELF, PETSC_ERR_PLIB, "%s: never yielded in compression", name);
-  PetscCall(PetscPrintf(PETSC_COMM_SELF, "  cycle %s: sigma_max %.6f, X %.6f, reverse yield at X - R(p) = %.6f GPa (exx %.6f)\n", name, (double)sigma_top, (double)X, (double)pred, (double)exx_rev));
+  PetscCall(PetscPrintf(PETSC_COMM_SELF,
+    "  cycle %s: sigma_max %.6f, X %.6f, reverse yield at X - R(p) = %.6f GPa (exx %.6f)\n", name, (double)sigma_top,
+    (double)X, (double)pred, (double)exx_rev));
   PetscCall(PetscSNPrintf(label, sizeof(label), "cycle %s: stress at the predicted onset", name));
   CHECK_TOL(label, worst_onset, 1e-10);
   PetscCall(PetscSNPrintf(label, sizeof(label), "cycle %s: unloading and sigma = X - R(p)", name));
@@ -226,7 +242,8 @@ static PetscErrorCode TestShear(const char *name, const IndPlasticParams *m)
     tau         = st.p > 0 ? (IndPlasticR(m, st.p) + m->H * st.p) / PetscSqrtReal(3.0) : m->mu * g;
     worst       = PetscMax(worst, PetscAbsReal(sigma[3] - tau) / tau);
     worst       = PetscMax(worst, PetscAbsReal(sigma[3] - m->mu * (g - st.eps_p[3])) / tau);
-    worst_other = PetscMax(worst_other, PetscMax(PetscMax(PetscAbsReal(sigma[0]), PetscAbsReal(sigma[1])), PetscMax(PetscAbsReal(sigma[2]), PetscMax(PetscAbsReal(sigma[4]), PetscAbsReal(sigma[5])))) / tau);
+    worst_other = PetscMax(worst_other, PetscMax(PetscMax(PetscAbsReal(sigma[0]), PetscAbsReal(sigma[1])),
+      PetscMax(PetscAbsReal(sigma[2]), PetscMax(PetscAbsReal(sigma[4]), PetscAbsReal(sigma[5])))) / tau);
     if (st.p > 0) worst_p = PetscMax(worst_p, PetscAbsReal(st.p - st.eps_p[3] / PetscSqrtReal(3.0)) / st.p);
   }
   PetscCheck(st.p > 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "%s: shear test never yielded", name);
@@ -240,7 +257,8 @@ static PetscErrorCode TestShear(const char *name, const IndPlasticParams *m)
 }
 
 /* A random history and a total strain whose trial von Mises stress is factor * R(p_n). */
-static void RandomState(const IndPlasticParams *m, unsigned long long *s, PetscReal factor, IndPlasticState *old, PetscReal eps[6])
+static void RandomState(const IndPlasticParams *m, unsigned long long *s, PetscReal factor, IndPlasticState *old,
+  PetscReal eps[6])
 {
   PetscReal ep[6], d[6], nd, q, vol = 1e-3 * Normal(s);
 
@@ -261,7 +279,8 @@ static void RandomState(const IndPlasticParams *m, unsigned long long *s, PetscR
 }
 
 /* Consistent tangent against central differences, and the returned state on the yield surface. */
-static PetscErrorCode TestTangent(const char *name, const IndPlasticParams *m, int nsamples, unsigned long long *seed, PetscReal *worst_fd, PetscReal *worst_ys, int *used, int *skipped, int *plastic)
+static PetscErrorCode TestTangent(const char *name, const IndPlasticParams *m, int nsamples, unsigned long long *seed,
+  PetscReal *worst_fd, PetscReal *worst_ys, int *used, int *skipped, int *plastic)
 {
   PetscFunctionBeginUser;
   for (int k = 0; k < nsamples; ++k) {
@@ -286,7 +305,8 @@ static PetscErrorCode TestTangent(const char *name, const IndPlasticParams *m, i
     PetscCall(Update(m, eps, &old, &st, sigma, D, &dp));
     if (dp > 0) {
       ++*plastic;
-      *worst_ys = PetscMax(*worst_ys, PetscAbsReal(Equivalent(sigma, st.x) - IndPlasticR(m, st.p)) / IndPlasticR(m, st.p));
+      *worst_ys = PetscMax(*worst_ys,
+        PetscAbsReal(Equivalent(sigma, st.x) - IndPlasticR(m, st.p)) / IndPlasticR(m, st.p));
     }
     for (int i = 0; i < 6; ++i) emax = PetscMax(emax, PetscAbsReal(eps[i]));
     h = 1e-7 * PetscMax(emax, m->R0 / (2.0 * m->mu));
@@ -310,7 +330,9 @@ static PetscErrorCode TestTangent(const char *name, const IndPlasticParams *m, i
       dmax = PetscMax(dmax, PetscAbsReal(D[i]));
       diff = PetscMax(diff, PetscAbsReal(D[i] - Dfd[i]));
     }
-    PetscCheck(diff / dmax <= 1e-6, PETSC_COMM_SELF, PETSC_ERR_PLIB, "%s: tangent differs from finite differences by %g (relative) at sample %d, factor %g, dp %g", name, (double)(diff / dmax), k, (double)factor, (double)dp);
+    PetscCheck(diff / dmax <= 1e-6, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+      "%s: tangent differs from finite differences by %g (relative) at sample %d, factor %g, dp %g", name,
+      (double)(diff / dmax), k, (double)factor, (double)dp);
     *worst_fd = PetscMax(*worst_fd, diff / dmax);
     ++*used;
   }
@@ -333,17 +355,23 @@ static PetscErrorCode TestRobustness(void)
   RandomState(&m, &seed, 20.0, &old, eps);
   memset(&st, 0x5a, sizeof(st));
   status = IndPlasticUpdate(&m, eps, &old, &st, sigma, D, &dp);
-  PetscCheck(status == IND_PLASTIC_NOT_CONVERGED, PETSC_COMM_SELF, PETSC_ERR_PLIB, "max_iterations = 1 on a large Voce increment should not converge");
-  PetscCheck(!memcmp(&st, &old, sizeof(st)), PETSC_COMM_SELF, PETSC_ERR_PLIB, "new_state differs from old after a failed return");
-  for (int i = 0; i < 6; ++i) PetscCheck(PetscIsNanReal(sigma[i]), PETSC_COMM_SELF, PETSC_ERR_PLIB, "sigma must be NaN after a failed return");
-  for (int i = 0; i < 36; ++i) PetscCheck(PetscIsNanReal(D[i]), PETSC_COMM_SELF, PETSC_ERR_PLIB, "D must be NaN after a failed return");
+  PetscCheck(status == IND_PLASTIC_NOT_CONVERGED, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+    "max_iterations = 1 on a large Voce increment should not converge");
+  PetscCheck(!memcmp(&st, &old, sizeof(st)), PETSC_COMM_SELF, PETSC_ERR_PLIB,
+    "new_state differs from old after a failed return");
+  for (int i = 0; i < 6; ++i) PetscCheck(PetscIsNanReal(sigma[i]), PETSC_COMM_SELF, PETSC_ERR_PLIB,
+    "sigma must be NaN after a failed return");
+  for (int i = 0; i < 36; ++i) PetscCheck(PetscIsNanReal(D[i]), PETSC_COMM_SELF, PETSC_ERR_PLIB,
+    "D must be NaN after a failed return");
   PetscCheck(PetscIsNanReal(dp), PETSC_COMM_SELF, PETSC_ERR_PLIB, "dp must be NaN after a failed return");
   st     = old; /* in place, as an assembly loop may call it */
   status = IndPlasticUpdate(&m, eps, &st, &st, sigma, NULL, NULL);
-  PetscCheck(status == IND_PLASTIC_NOT_CONVERGED && !memcmp(&st, &old, sizeof(st)), PETSC_COMM_SELF, PETSC_ERR_PLIB, "in-place failed return changed the state");
+  PetscCheck(status == IND_PLASTIC_NOT_CONVERGED && !memcmp(&st, &old, sizeof(st)), PETSC_COMM_SELF, PETSC_ERR_PLIB,
+    "in-place failed return changed the state");
   m.max_iterations = 0;
   PetscCall(Update(&m, eps, &old, &st, sigma, NULL, &dp));
-  PetscCall(PetscPrintf(PETSC_COMM_SELF, "  failed return (max_iterations = 1): NOT_CONVERGED, state untouched, outputs NaN; default cap converges\n"));
+  PetscCall(PetscPrintf(PETSC_COMM_SELF,
+    "  failed return (max_iterations = 1): NOT_CONVERGED, state untouched, outputs NaN; default cap converges\n"));
 
   /* Pathological Voce: saturation within p ~ 1e-6. */
   m = Law(IND_HARDENING_VOCE, 0.3, 0.5, 1e6, 0.0, 1.0);
@@ -371,7 +399,8 @@ static PetscErrorCode TestRobustness(void)
     qE      = factor * m.R0;
     eps[3]  = qE / (PetscSqrtReal(3.0) * m.mu);
     newton0 = (qE - m.R0) / (c + IndPlasticdR(&m, 0.0));
-    PetscCheck(newton0 > qE / c, PETSC_COMM_SELF, PETSC_ERR_PLIB, "softening case does not exercise the bisection fallback");
+    PetscCheck(newton0 > qE / c, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+      "softening case does not exercise the bisection fallback");
     PetscCall(Update(&m, eps, &old, &st, sigma, NULL, &dp));
     worst = PetscMax(worst, PetscAbsReal(Equivalent(sigma, st.x) - IndPlasticR(&m, st.p)) / IndPlasticR(&m, st.p));
     worst = PetscMax(worst, PetscAbsReal(qE - c * dp - IndPlasticR(&m, dp)) / qE);
@@ -383,7 +412,8 @@ static PetscErrorCode TestRobustness(void)
 /* Each non-physical value must be rejected, naming its option. */
 static PetscErrorCode TestParamsCheck(void)
 {
-  const char *option[] = {"-film_young", "-film_young", "-film_yield", "-film_yield", "-film_saturation", "-film_voce_rate", "-film_kinematic", "-film_hardening_slope", "-film_voce_rate"};
+  const char *option[] = {"-film_young", "-film_young", "-film_yield", "-film_yield", "-film_saturation",
+    "-film_voce_rate", "-film_kinematic", "-film_hardening_slope", "-film_voce_rate"};
   const int   ncases   = (int)(sizeof(option) / sizeof(option[0]));
 
   PetscFunctionBeginUser;
@@ -406,11 +436,14 @@ static PetscErrorCode TestParamsCheck(void)
     PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
     ierr = IndPlasticParamsCheck(&m, "film_", PETSC_COMM_SELF);
     PetscCall(PetscPopErrorHandler());
-    PetscCheck(ierr != 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "IndPlasticParamsCheck accepted bad case %d (%s)", k, option[k]);
+    PetscCheck(ierr != 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "IndPlasticParamsCheck accepted bad case %d (%s)", k,
+      option[k]);
     PetscCall(PetscErrorMessage(ierr, NULL, &msg));
-    PetscCheck(msg && strstr(msg, option[k]), PETSC_COMM_SELF, PETSC_ERR_PLIB, "Rejection of case %d does not name %s: '%s'", k, option[k], msg ? msg : "(none)");
+    PetscCheck(msg && strstr(msg, option[k]), PETSC_COMM_SELF, PETSC_ERR_PLIB,
+      "Rejection of case %d does not name %s: '%s'", k, option[k], msg ? msg : "(none)");
   }
-  PetscCall(PetscPrintf(PETSC_COMM_SELF, "Parameter check: %d non-physical cases rejected, each naming its option\n", ncases));
+  PetscCall(PetscPrintf(PETSC_COMM_SELF, "Parameter check: %d non-physical cases rejected, each naming its option\n",
+    ncases));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -442,7 +475,8 @@ int main(int argc, char **argv)
   for (int l = 0; l < nlaws; ++l) PetscCall(IndPlasticParamsCheck(&laws[l].m, "film_", PETSC_COMM_SELF));
   PetscCall(TestParamsCheck());
 
-  PetscCall(PetscPrintf(PETSC_COMM_SELF, "Uniaxial monotonic tension (E = %g GPa, nu = %g)\n", (double)YOUNG, (double)POISSON));
+  PetscCall(PetscPrintf(PETSC_COMM_SELF, "Uniaxial monotonic tension (E = %g GPa, nu = %g)\n", (double)YOUNG,
+    (double)POISSON));
   PetscCall(TestUniaxial("Voce + Prager", &voce));
   PetscCall(TestUniaxial("linear isotropic", &linear));
   PetscCall(TestUniaxial("linear + Prager", &linear_kin));
@@ -458,14 +492,16 @@ int main(int argc, char **argv)
     int       u = 0, s = 0, p = 0;
 
     PetscCall(TestTangent(laws[l].name, &laws[l].m, 300, &seed, &w, &worst_ys, &u, &s, &p));
-    PetscCall(PetscPrintf(PETSC_COMM_SELF, "  %-22s %3d compared (%3d plastic), %2d skipped at the kink, worst %.2e\n", laws[l].name, u, p, s, (double)w));
+    PetscCall(PetscPrintf(PETSC_COMM_SELF,
+      "  %-22s %3d compared (%3d plastic), %2d skipped at the kink, worst %.2e\n", laws[l].name, u, p, s, (double)w));
     worst_fd = PetscMax(worst_fd, w);
     used += u;
     skipped += s;
     plastic += p;
   }
   PetscCheck(used >= 1000, PETSC_COMM_SELF, PETSC_ERR_PLIB, "Only %d finite-difference samples compared", used);
-  PetscCall(PetscPrintf(PETSC_COMM_SELF, "  %d samples compared, %d skipped (stencil across the elastic/plastic kink)\n", used, skipped));
+  PetscCall(PetscPrintf(PETSC_COMM_SELF,
+    "  %d samples compared, %d skipped (stencil across the elastic/plastic kink)\n", used, skipped));
   CHECK_TOL("tangent vs FD: max|D - Dfd| / max|D|", worst_fd, 1e-6);
   CHECK_TOL("returned state on the yield surface (random plastic)", worst_ys, 1e-12);
   PetscCall(PetscPrintf(PETSC_COMM_SELF, "Robustness\n"));

@@ -2,7 +2,8 @@
 
 const char *const IndContactStatusNames[] = {"open", "stick", "slip"};
 
-void IndBipotentialPredictor(PetscReal mu, PetscReal rho, const PetscReal r[3], PetscReal gap, const PetscReal du_t[2], PetscReal tau[3])
+void IndBipotentialPredictor(PetscReal mu, PetscReal rho, const PetscReal r[3], PetscReal gap,
+  const PetscReal du_t[2], PetscReal tau[3])
 {
   const PetscReal slip = PetscSqrtReal(du_t[0] * du_t[0] + du_t[1] * du_t[1]);
 
@@ -45,7 +46,8 @@ IndContactStatus IndBipotentialProject(PetscReal mu, const PetscReal tau[3], Pet
       for (int i = 0; i < 2; ++i) {
         D[1 + i]       = mu * c * s[i];
         D[3 * (1 + i)] = mu * c * s[i];
-        for (int j = 0; j < 2; ++j) D[3 * (1 + i) + 1 + j] = mu * mu * c * s[i] * s[j] + mu * rn / a * ((i == j ? 1.0 : 0.0) - s[i] * s[j]);
+        for (int j = 0; j < 2; ++j) D[3 * (1 + i) + 1 + j] = mu * mu * c * s[i] * s[j] + mu * rn / a * ((i == j ? 1.0
+          : 0.0) - s[i] * s[j]);
       }
     }
     return IND_CONTACT_SLIP;

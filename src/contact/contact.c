@@ -14,7 +14,8 @@ static inline PetscReal L2(int node, PetscReal s)
    int_face N_a |n_z| dA of every node of one face: the consistent nodal force of a unit pressure on
    a flat face, for its own Lagrange basis (Q1/Q2 quads, P1/P2 triangles). The vertices are in the
    cyclic order of the face's closure; edge nodes are identified by their two vertices. */
-static PetscErrorCode FaceAreas(DM dm, PetscSection s, PetscInt face, const PetscReal *vx, PetscInt nv, PetscInt degree, PetscScalar *a)
+static PetscErrorCode FaceAreas(DM dm, PetscSection s, PetscInt face, const PetscReal *vx, PetscInt nv,
+  PetscInt degree, PetscScalar *a)
 {
   PetscInt *closure = NULL, ncl, vpt[4], nvv = 0, vStart, vEnd, eStart, eEnd;
   PetscInt  off[9], nn = 0;
@@ -26,7 +27,8 @@ static PetscErrorCode FaceAreas(DM dm, PetscSection s, PetscInt face, const Pets
   PetscCall(DMPlexGetTransitiveClosure(dm, face, PETSC_TRUE, &ncl, &closure));
   for (PetscInt j = 0; j < ncl; ++j)
     if (closure[2 * j] >= vStart && closure[2 * j] < vEnd) vpt[nvv++] = closure[2 * j];
-  PetscCheck(nvv == nv, PETSC_COMM_SELF, PETSC_ERR_PLIB, "Face %" PetscInt_FMT " has %" PetscInt_FMT " vertices, expected %" PetscInt_FMT, face, nvv, nv);
+  PetscCheck(nvv == nv, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+    "Face %" PetscInt_FMT " has %" PetscInt_FMT " vertices, expected %" PetscInt_FMT, face, nvv, nv);
   /* reference positions of the face's nodes */
   for (PetscInt j = 0; j < ncl; ++j) {
     const PetscInt p = closure[2 * j];
@@ -180,7 +182,8 @@ static PetscErrorCode SurfaceNodes(IndMesh mesh, IndDisc disc, const char surfac
       }
       PetscCall(DMPlexRestoreTransitiveClosure(dm, f[i], PETSC_TRUE, &ncl, &closure));
       PetscCall(DMPlexVecGetClosure(cdm, cs, X, f[i], &nc, &xc));
-      PetscCheck(nc == 9 || nc == 12, PETSC_COMM_SELF, PETSC_ERR_SUP, "Contact surface '%s': faces must be flat triangles or quadrilaterals with straight edges", surface);
+      PetscCheck(nc == 9 || nc == 12, PETSC_COMM_SELF, PETSC_ERR_SUP,
+        "Contact surface '%s': faces must be flat triangles or quadrilaterals with straight edges", surface);
       PetscCheck(3 * nv == nc, PETSC_COMM_SELF, PETSC_ERR_PLIB,
                  "Contact surface '%s': face with %" PetscInt_FMT " vertices and %" PetscInt_FMT " coordinates",
                  surface, nv, nc);
@@ -394,23 +397,35 @@ PetscErrorCode IndContactCreate(IndMesh mesh, IndDisc disc, IndBC bc, IndContact
   ind.radius   = radius;
   ind.angle    = angle * deg;
   ind.rotation = rotation * deg;
-  PetscCheck(has_radius || (ind.type != IND_INDENTER_SPHERE && ind.type != IND_INDENTER_FLAT), comm, PETSC_ERR_ARG_WRONG, "-indenter_type %s needs -indenter_radius (nm)", IndIndenterTypes[ind.type]);
-  PetscCheck(radius >= 0 && (radius > 0 || (ind.type != IND_INDENTER_SPHERE && ind.type != IND_INDENTER_FLAT)), comm, PETSC_ERR_ARG_OUTOFRANGE, "-indenter_radius must be %s, got %g", ind.type == IND_INDENTER_SPHERE || ind.type == IND_INDENTER_FLAT ? "> 0" : ">= 0", (double)radius);
-  PetscCheck(angle >= 0 && angle < 90, comm, PETSC_ERR_ARG_OUTOFRANGE, "-indenter_angle must lie in (0, 90) degrees (0: the standard angle), got %g", (double)angle);
-  PetscCheck(!IndIndenterSetUp(&ind), comm, PETSC_ERR_ARG_OUTOFRANGE, "-indenter_type %s: bad -indenter_radius or -indenter_angle", IndIndenterTypes[ind.type]);
+  PetscCheck(has_radius || (ind.type != IND_INDENTER_SPHERE && ind.type != IND_INDENTER_FLAT), comm,
+    PETSC_ERR_ARG_WRONG, "-indenter_type %s needs -indenter_radius (nm)", IndIndenterTypes[ind.type]);
+  PetscCheck(radius >= 0 && (radius > 0 || (ind.type != IND_INDENTER_SPHERE && ind.type != IND_INDENTER_FLAT)), comm,
+    PETSC_ERR_ARG_OUTOFRANGE, "-indenter_radius must be %s, got %g",
+    ind.type == IND_INDENTER_SPHERE || ind.type == IND_INDENTER_FLAT ? "> 0" : ">= 0", (double)radius);
+  PetscCheck(angle >= 0 && angle < 90, comm, PETSC_ERR_ARG_OUTOFRANGE,
+    "-indenter_angle must lie in (0, 90) degrees (0: the standard angle), got %g", (double)angle);
+  PetscCheck(!IndIndenterSetUp(&ind), comm, PETSC_ERR_ARG_OUTOFRANGE,
+    "-indenter_type %s: bad -indenter_radius or -indenter_angle", IndIndenterTypes[ind.type]);
   PetscCheck(!has_axis || naxis == 2, comm, PETSC_ERR_ARG_SIZ,
     "-indenter_axis needs two values x,y (nm), got %" PetscInt_FMT, naxis);
-  PetscCheck(!has_rounding || c->rounding >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-indenter_sharp_rounding must be >= 0 (nm), got %g", (double)c->rounding);
+  PetscCheck(!has_rounding || c->rounding >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE,
+    "-indenter_sharp_rounding must be >= 0 (nm), got %g", (double)c->rounding);
   if (!has_rounding) c->rounding = -1; /* set from the depth at setup */
   PetscCheck(c->mu >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-contact_friction must be >= 0, got %g", (double)c->mu);
-  PetscCheck(c->rho_scale > 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-contact_rho_scale must be > 0, got %g", (double)c->rho_scale);
-  PetscCheck(c->rtol > 0 && c->pen_rtol > 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-contact_uzawa_rtol and -contact_penetration_rtol must be > 0");
-  PetscCheck(c->max_outer >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-contact_uzawa_max_it must be >= 1, got %" PetscInt_FMT, c->max_outer);
-  PetscCheck(!has_sym || symmetry >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-contact_symmetry_factor must be >= 1, got %g", (double)symmetry);
+  PetscCheck(c->rho_scale > 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-contact_rho_scale must be > 0, got %g",
+    (double)c->rho_scale);
+  PetscCheck(c->rtol > 0 && c->pen_rtol > 0, comm, PETSC_ERR_ARG_OUTOFRANGE,
+    "-contact_uzawa_rtol and -contact_penetration_rtol must be > 0");
+  PetscCheck(c->max_outer >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE,
+    "-contact_uzawa_max_it must be >= 1, got %" PetscInt_FMT, c->max_outer);
+  PetscCheck(!has_sym || symmetry >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE,
+    "-contact_symmetry_factor must be >= 1, got %g", (double)symmetry);
   /* Consistent nodal forces of a pressure vanish at the corner nodes of a 6-node triangle, so a
      node-to-surface contact cannot represent a smooth pressure there (and negative ones would be
      needed by 20-node serendipity faces). Q2 Lagrange faces have positive weights. */
-  PetscCheck(!(disc->simplex && disc->degree == 2), comm, PETSC_ERR_SUP, "Contact on P2 tetrahedra is not supported: the consistent nodal forces of a pressure are zero at the corners of their 6-node faces. Use P1 tetrahedra or Q1/Q2 hexahedra for the contact region");
+  PetscCheck(!(disc->simplex && disc->degree == 2), comm, PETSC_ERR_SUP,
+    "Contact on P2 tetrahedra is not supported: the consistent nodal forces of a pressure are zero at the corners of "
+    "their 6-node faces. Use P1 tetrahedra or Q1/Q2 hexahedra for the contact region");
 
   /* The owned nodes of the contact surface, their positions and tributary areas. */
   {
@@ -530,7 +545,8 @@ PetscErrorCode IndContactSetUp(IndContact c, IndBC bc, Mat K, PetscReal depth_ma
   PetscCall(MatCreateVecs(K, &d, NULL));
   PetscCall(MatGetDiagonal(K, d));
   PetscCall(VecGetArrayRead(d, &v));
-  for (PetscInt i = 0; i < c->n; ++i) c->kdiag[i] = PetscRealPart(v[c->row[i]] + v[c->row[i] + 1] + v[c->row[i] + 2]) / 3.0;
+  for (PetscInt i = 0; i < c->n; ++i) c->kdiag[i] = PetscRealPart(v[c->row[i]] + v[c->row[i] + 1] + v[c->row[i] + 2])
+    / 3.0;
   PetscCall(VecRestoreArrayRead(d, &v));
   PetscCall(VecZeroEntries(d));
   PetscCall(VecGetArray(d, &m));

@@ -1,7 +1,8 @@
 #include <math.h>
 #include "ind_indenter.h"
 
-const char *const IndIndenterTypes[] = {"sphere", "cone", "berkovich", "vickers", "cube_corner", "flat", "IndIndenterType", "IND_INDENTER_", NULL};
+const char *const IndIndenterTypes[] = {"sphere", "cone", "berkovich", "vickers", "cube_corner", "flat",
+  "IndIndenterType", "IND_INDENTER_", NULL};
 
 static const PetscReal deg = PETSC_PI / 180.0;
 
@@ -32,7 +33,8 @@ int IndIndenterSetUp(IndIndenter *ind)
   if (ind->angle == 0) ind->angle = standard;
   if (ind->radius < 0) return 1;
   if ((ind->type == IND_INDENTER_SPHERE || ind->type == IND_INDENTER_FLAT) && !(ind->radius > 0)) return 1;
-  if (ind->type != IND_INDENTER_SPHERE && ind->type != IND_INDENTER_FLAT && !(ind->angle > 0 && ind->angle < 0.5 * PETSC_PI)) return 1;
+  if (ind->type != IND_INDENTER_SPHERE && ind->type != IND_INDENTER_FLAT && !(ind->angle > 0 && ind->angle < 0.5
+    * PETSC_PI)) return 1;
   for (PetscInt i = 0; i < ind->nfaces; ++i) {
     const PetscReal phi = ind->rotation + 2.0 * PETSC_PI * i / ind->nfaces;
     ind->m[i][0]        = PetscCosReal(ind->angle) * PetscCosReal(phi);
@@ -101,7 +103,8 @@ static void PyramidCore(const IndIndenter *ind, const PetscReal y[3], PetscReal 
     if (s[i] > 0) { /* foot of the perpendicular on face i's plane */
       for (int k = 0; k < 3; ++k) q[k] = y[k] - s[i] * ind->m[i][k];
       for (PetscInt l = 0; l < nf && feasible; ++l)
-        if (l != i && Dot(q, ind->m[l]) > 1e-14 * (PetscAbsReal(s[i]) + PetscSqrtReal(Dot(y, y)))) feasible = PETSC_FALSE;
+        if (l != i && Dot(q, ind->m[l]) > 1e-14 * (PetscAbsReal(s[i]) + PetscSqrtReal(Dot(y,
+          y)))) feasible = PETSC_FALSE;
       if (feasible && s[i] < best) {
         best = s[i];
         for (int k = 0; k < 3; ++k) p[k] = q[k];
@@ -253,7 +256,8 @@ PetscReal IndIndenterArea(const IndIndenter *ind, PetscReal hc)
     /* A = 1/2 int r(phi)^2 dphi over the convex section, by 5-point Gauss-Legendre on sub-intervals of
        the 2 nfaces sectors between face and edge azimuths, where r(phi) is smooth piecewise. */
     const PetscReal xg[5] = {-0.9061798459386640, -0.5384693101056831, 0.0, 0.5384693101056831, 0.9061798459386640};
-    const PetscReal wg[5] = {0.2369268850561891, 0.4786286704993665, 0.5688888888888889, 0.4786286704993665, 0.2369268850561891};
+    const PetscReal wg[5] = {0.2369268850561891, 0.4786286704993665, 0.5688888888888889, 0.4786286704993665,
+      0.2369268850561891};
     const PetscInt  nsub = 64, nsec = 2 * ind->nfaces;
     const PetscReal z = ind->surface - ind->depth + hc, width = 2 * PETSC_PI / nsec;
     PetscReal       A = 0;

@@ -82,20 +82,23 @@ static PetscBool Quotable(const char s[])
   return strchr(s, '\'') ? PETSC_FALSE : PETSC_TRUE;
 }
 
-PetscErrorCode IndGmshMesh(MPI_Comm comm, const char gmsh[], const char geo[], char *params[], PetscInt nparams, const char msh[])
+PetscErrorCode IndGmshMesh(MPI_Comm comm, const char gmsh[], const char geo[], char *params[], PetscInt nparams,
+  const char msh[])
 {
   PetscMPIInt rank;
   int         status = 0;
   char        cmd[4 * PETSC_MAX_PATH_LEN], log[PETSC_MAX_PATH_LEN + 8], tmp[PETSC_MAX_PATH_LEN + 8];
 
   PetscFunctionBeginUser;
-  PetscCheck(Quotable(gmsh) && Quotable(geo) && Quotable(msh), comm, PETSC_ERR_ARG_WRONG, "-mesh_file, -mesh_gmsh and the mesh's output path must not contain a single quote");
+  PetscCheck(Quotable(gmsh) && Quotable(geo) && Quotable(msh), comm, PETSC_ERR_ARG_WRONG,
+    "-mesh_file, -mesh_gmsh and the mesh's output path must not contain a single quote");
   PetscCall(PetscSNPrintf(log, sizeof(log), "%s.log", msh));
   PetscCall(PetscSNPrintf(tmp, sizeof(tmp), "%s.tmp", msh));
   PetscCall(PetscSNPrintf(cmd, sizeof(cmd), "'%s' -3 '%s' -format msh41", gmsh, geo));
   for (PetscInt i = 0; i < nparams; ++i) {
     char  *eq = strchr(params[i], '='), tail[PETSC_MAX_PATH_LEN];
-    PetscCheck(eq && eq != params[i] && eq[1] && Quotable(params[i]), comm, PETSC_ERR_ARG_WRONG, "-mesh_geo_parameters: '%s' is not name=value", params[i]);
+    PetscCheck(eq && eq != params[i] && eq[1] && Quotable(params[i]), comm, PETSC_ERR_ARG_WRONG,
+      "-mesh_geo_parameters: '%s' is not name=value", params[i]);
     PetscCall(PetscSNPrintf(tail, sizeof(tail), " -setnumber '%.*s' '%s'", (int)(eq - params[i]), params[i], eq + 1));
     PetscCall(PetscStrlcat(cmd, tail, sizeof(cmd)));
   }

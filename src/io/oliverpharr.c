@@ -13,7 +13,8 @@ void IndOPParamsDefault(IndOPParams *p)
 }
 
 /* log-log regression of P on (h - h_f) for a fixed h_f; returns the misfit sum of squares in P. */
-static PetscReal FitGivenHf(const PetscReal *h, const PetscReal *P, PetscInt n, PetscReal hf, PetscReal *alpha, PetscReal *m)
+static PetscReal FitGivenHf(const PetscReal *h, const PetscReal *P, PetscInt n, PetscReal hf, PetscReal *alpha,
+  PetscReal *m)
 {
   PetscReal sx = 0, sy = 0, sxx = 0, sxy = 0, rss = 0;
   for (PetscInt i = 0; i < n; ++i) {
@@ -30,7 +31,8 @@ static PetscReal FitGivenHf(const PetscReal *h, const PetscReal *P, PetscInt n, 
 }
 
 /* Gauss-Newton on (alpha, h_f, m) for the misfit in P itself, from the log-fit's values. */
-static void Polish(const PetscReal *h, const PetscReal *P, PetscInt n, PetscReal hmin, PetscReal *alpha, PetscReal *hf, PetscReal *m)
+static void Polish(const PetscReal *h, const PetscReal *P, PetscInt n, PetscReal hmin, PetscReal *alpha,
+  PetscReal *hf, PetscReal *m)
 {
   for (int it = 0; it < 50; ++it) {
     PetscReal JTJ[3][3] = {{0}}, JTr[3] = {0}, d[3], det;
@@ -42,13 +44,15 @@ static void Polish(const PetscReal *h, const PetscReal *P, PetscInt n, PetscReal
         for (int b = 0; b < 3; ++b) JTJ[a][b] += J[a] * J[b];
       }
     }
-    det = JTJ[0][0] * (JTJ[1][1] * JTJ[2][2] - JTJ[1][2] * JTJ[2][1]) - JTJ[0][1] * (JTJ[1][0] * JTJ[2][2] - JTJ[1][2] * JTJ[2][0]) + JTJ[0][2] * (JTJ[1][0] * JTJ[2][1] - JTJ[1][1] * JTJ[2][0]);
+    det = JTJ[0][0] * (JTJ[1][1] * JTJ[2][2] - JTJ[1][2] * JTJ[2][1]) - JTJ[0][1] * (JTJ[1][0] * JTJ[2][2]
+      - JTJ[1][2] * JTJ[2][0]) + JTJ[0][2] * (JTJ[1][0] * JTJ[2][1] - JTJ[1][1] * JTJ[2][0]);
     if (!(PetscAbsReal(det) > 0)) return;
     for (int a = 0; a < 3; ++a) { /* Cramer's rule */
       PetscReal M[3][3];
       for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j) M[i][j] = j == a ? JTr[i] : JTJ[i][j];
-      d[a] = (M[0][0] * (M[1][1] * M[2][2] - M[1][2] * M[2][1]) - M[0][1] * (M[1][0] * M[2][2] - M[1][2] * M[2][0]) + M[0][2] * (M[1][0] * M[2][1] - M[1][1] * M[2][0])) / det;
+      d[a] = (M[0][0] * (M[1][1] * M[2][2] - M[1][2] * M[2][1]) - M[0][1] * (M[1][0] * M[2][2] - M[1][2] * M[2][0])
+        + M[0][2] * (M[1][0] * M[2][1] - M[1][1] * M[2][0])) / det;
     }
     if (*hf + d[1] >= hmin || *alpha + d[0] <= 0) return; /* keep h_f below the data */
     *alpha += d[0];
@@ -58,7 +62,8 @@ static void Polish(const PetscReal *h, const PetscReal *P, PetscInt n, PetscReal
   }
 }
 
-int IndOliverPharr(const PetscReal *h, const PetscReal *P, PetscInt n, const IndOPParams *p, IndAreaFn area, void *ctx, IndOPResult *r)
+int IndOliverPharr(const PetscReal *h, const PetscReal *P, PetscInt n, const IndOPParams *p, IndAreaFn area,
+  void *ctx, IndOPResult *r)
 {
   PetscInt  imax = 0, k = 0;
   PetscReal *hsel, *Psel, hmin = PETSC_MAX_REAL, hmax_sel = -PETSC_MAX_REAL, lo, hi, a, b, fa, fb, al, m;
@@ -127,7 +132,8 @@ int IndOliverPharr(const PetscReal *h, const PetscReal *P, PetscInt n, const Ind
   return 0;
 }
 
-void IndOPFromArea(const IndOPParams *p, const IndOPResult *fit, PetscReal A, PetscReal *H, PetscReal *E_r, PetscReal *E)
+void IndOPFromArea(const IndOPParams *p, const IndOPResult *fit, PetscReal A, PetscReal *H, PetscReal *E_r,
+  PetscReal *E)
 {
   *H   = 1000.0 * fit->P_max / A;
   *E_r = 1000.0 * PetscSqrtReal(PETSC_PI) / (2 * p->beta) * fit->S / PetscSqrtReal(A);

@@ -12,10 +12,13 @@
    they are legitimately still unused. Everything else unused by then is a typo or an option that
    does not apply, and running hours on a misspelled setting is worse than stopping now. */
 static const char *lazy_prefixes[] = {"log", "options_", "malloc", "memory_view", "info", "help", "version", "history",
-                                      "on_error", "mat_mumps_", "mat_superlu", "mat_view", "vec_view", "ksp_view", "snes_view",
-                                      "pc_view", "dm_view", "check_pointer", "fp_trap", "viewer_", "mpi_", "use_gpu", "skip_petscrc",
+                                      "on_error", "mat_mumps_", "mat_superlu", "mat_view", "vec_view", "ksp_view",
+                                        "snes_view",
+                                      "pc_view", "dm_view", "check_pointer", "fp_trap", "viewer_", "mpi_", "use_gpu",
+                                        "skip_petscrc",
                                       "objects_dump", "display", "nox", "x_", "draw_", "petscpartitioner_view",
-                                      "ksp_converged_reason", "snes_converged_reason", "snes_test_", "mg_levels_", "mg_coarse_", "pc_hypre_boomeramg_print", NULL};
+                                      "ksp_converged_reason", "snes_converged_reason", "snes_test_", "mg_levels_",
+                                        "mg_coarse_", "pc_hypre_boomeramg_print", NULL};
 
 PetscErrorCode IndOptionsCheckUnused(MPI_Comm comm)
 {
@@ -45,7 +48,8 @@ PetscErrorCode IndOptionsCheckUnused(MPI_Comm comm)
   }
   PetscCall(PetscOptionsLeftRestore(NULL, &n, &names, &values));
   PetscCheck(!bad, comm, PETSC_ERR_ARG_WRONG,
-             "Unknown or unused option(s):%s. Check the spelling (-help lists every option), or pass -options_check_unused 0 to run anyway", list);
+             "Unknown or unused option(s):%s. Check the spelling (-help lists every option), or pass "
+               "-options_check_unused 0 to run anyway", list);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -76,7 +76,8 @@ static PetscErrorCode CreateTopology(IndOutput o, IS *topo)
       verts[nv++] = (off >= 0 ? off : -(off + 1)) / 3;
     }
     PetscCall(DMPlexRestoreTransitiveClosure(dm, c, PETSC_TRUE, &ncl, &closure));
-    PetscCheck(nv == o->corners, PETSC_COMM_SELF, PETSC_ERR_PLIB, "Cell %" PetscInt_FMT " has %" PetscInt_FMT " vertices", c, nv);
+    PetscCheck(nv == o->corners, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+      "Cell %" PetscInt_FMT " has %" PetscInt_FMT " vertices", c, nv);
     for (PetscInt k = 0; k < nv; ++k) conn[n++] = verts[perm[k]];
   }
   PetscCall(ISCreateGeneral(PetscObjectComm((PetscObject)dm), n, conn, PETSC_OWN_POINTER, topo));
@@ -240,7 +241,8 @@ PetscErrorCode IndOutputCreate(IndMesh mesh, IndDisc disc, IndOutput *out)
   PetscOptionsBegin(comm, NULL, IND_TITLE "Output files", "Output");
   PetscCall(PetscOptionsGetString(NULL, NULL, "-output_dir", o->dir, sizeof(o->dir), NULL)); /* listed by rundir.c */
   PetscCall(IndOptionsBool("-output_fields", "Write field output (HDF5 + XDMF)", o->enabled, &o->enabled, NULL));
-  PetscCall(IndOptionsBool("-output_curve", "Write the load-displacement curve (CSV) of an indentation", o->curve, &o->curve,
+  PetscCall(IndOptionsBool("-output_curve", "Write the load-displacement curve (CSV) of an indentation", o->curve,
+    &o->curve,
                            NULL));
   PetscOptionsEnd();
   PetscCheck(o->dir[0], comm, PETSC_ERR_ARG_WRONG, "-output_dir must not be empty");
@@ -330,7 +332,8 @@ PetscErrorCode IndOutputWriteStep(IndOutput o, PetscReal time, Vec U, IndAssembl
 
   PetscFunctionBeginUser;
   if (!o->enabled) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCheck(o->nsteps < IND_MAX_OUTPUT_STEPS, PetscObjectComm((PetscObject)U), PETSC_ERR_SUP, "More than %d output steps", IND_MAX_OUTPUT_STEPS);
+  PetscCheck(o->nsteps < IND_MAX_OUTPUT_STEPS, PetscObjectComm((PetscObject)U), PETSC_ERR_SUP,
+    "More than %d output steps", IND_MAX_OUTPUT_STEPS);
   PetscCall(PetscLogStagePush(IndLog.output));
   PetscCall(PetscLogEventBegin(IndLog.output_write, 0, 0, 0, 0));
   if (!o->viewer) PetscCall(OpenFile(o));
@@ -395,7 +398,8 @@ PetscErrorCode IndOutputCurvePoint(IndOutput o, const IndCurvePoint *p)
     IndOutputCurveHeader(o->csv);
   }
   IndOutputCurveLine(o->csv, p);
-  PetscCheck(fflush(o->csv) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Error writing %s/load_displacement.csv", o->dir);
+  PetscCheck(fflush(o->csv) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Error writing %s/load_displacement.csv",
+    o->dir);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

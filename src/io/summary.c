@@ -10,24 +10,31 @@ PetscErrorCode IndOPParamsSetFromOptions(MPI_Comm comm, IndOPParams *p)
   PetscFunctionBeginUser;
   IndOPParamsDefault(p);
   PetscOptionsBegin(comm, NULL, IND_TITLE "Oliver-Pharr analysis (-op_*)", "OP");
-  PetscCall(IndOptionsReal("-op_fraction", "Fit the unloading points with P >= (1 - fraction) P_max", "", NULL, p->fraction,
+  PetscCall(IndOptionsReal("-op_fraction", "Fit the unloading points with P >= (1 - fraction) P_max", "", NULL,
+    p->fraction,
                            &p->fraction, NULL));
   PetscCall(IndOptionsReal("-op_epsilon", "Contact-depth factor: h_c = h_max - epsilon P_max / S", "", NULL, p->epsilon,
                            &p->epsilon, NULL));
-  PetscCall(IndOptionsReal("-op_beta", "Shape factor: E_r = sqrt(pi) / (2 beta) S / sqrt(A)", "", NULL, p->beta, &p->beta, NULL));
+  PetscCall(IndOptionsReal("-op_beta", "Shape factor: E_r = sqrt(pi) / (2 beta) S / sqrt(A)", "", NULL, p->beta,
+    &p->beta, NULL));
   PetscCall(IndOptionsReal("-op_indenter_modulus", "Indenter's Young's modulus (0 rigid, diamond 1141)", "GPa", NULL,
                            p->E_indenter, &p->E_indenter, NULL));
-  PetscCall(IndOptionsReal("-op_indenter_poisson", "Indenter's Poisson's ratio", "", NULL, p->nu_indenter, &p->nu_indenter,
+  PetscCall(IndOptionsReal("-op_indenter_poisson", "Indenter's Poisson's ratio", "", NULL, p->nu_indenter,
+    &p->nu_indenter,
                            NULL));
   PetscCall(IndOptionsReal("-op_poisson", "Sample's Poisson's ratio, for its modulus from E_r", "", NULL, p->nu_sample,
                            &p->nu_sample, NULL));
   PetscOptionsEnd();
-  PetscCheck(p->fraction > 0 && p->fraction <= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-op_fraction must lie in (0, 1], got %g", (double)p->fraction);
+  PetscCheck(p->fraction > 0 && p->fraction <= 1, comm, PETSC_ERR_ARG_OUTOFRANGE,
+    "-op_fraction must lie in (0, 1], got %g", (double)p->fraction);
   PetscCheck(p->epsilon > 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-op_epsilon must be > 0, got %g", (double)p->epsilon);
   PetscCheck(p->beta > 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-op_beta must be > 0, got %g", (double)p->beta);
-  PetscCheck(p->E_indenter >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-op_indenter_modulus must be >= 0 (GPa; 0 rigid), got %g", (double)p->E_indenter);
-  PetscCheck(p->nu_indenter > -1 && p->nu_indenter < 0.5, comm, PETSC_ERR_ARG_OUTOFRANGE, "-op_indenter_poisson must lie in (-1, 0.5), got %g", (double)p->nu_indenter);
-  PetscCheck(p->nu_sample > -1 && p->nu_sample < 0.5, comm, PETSC_ERR_ARG_OUTOFRANGE, "-op_poisson must lie in (-1, 0.5), got %g", (double)p->nu_sample);
+  PetscCheck(p->E_indenter >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE,
+    "-op_indenter_modulus must be >= 0 (GPa; 0 rigid), got %g", (double)p->E_indenter);
+  PetscCheck(p->nu_indenter > -1 && p->nu_indenter < 0.5, comm, PETSC_ERR_ARG_OUTOFRANGE,
+    "-op_indenter_poisson must lie in (-1, 0.5), got %g", (double)p->nu_indenter);
+  PetscCheck(p->nu_sample > -1 && p->nu_sample < 0.5, comm, PETSC_ERR_ARG_OUTOFRANGE,
+    "-op_poisson must lie in (-1, 0.5), got %g", (double)p->nu_sample);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -81,7 +88,8 @@ typedef struct {
   PetscBool   integer;
 } Entry;
 
-static void Put(Entry *e, PetscInt *n, const char *key, const char *label, const char *unit, PetscReal v, PetscBool integer)
+static void Put(Entry *e, PetscInt *n, const char *key, const char *label, const char *unit, PetscReal v,
+  PetscBool integer)
 {
   e[*n].key = key, e[*n].label = label, e[*n].unit = unit, e[*n].value = v, e[*n].integer = integer;
   (*n)++;
@@ -159,7 +167,8 @@ PetscErrorCode IndSummaryFinish(IndSummary s, const IndIndenter *ind, const IndR
   code = info->slid ? 3 : IndOliverPharr(h, P, s->n, &s->op, Area, (void *)ind, &r);
   if (code == 3)
     PetscCall(PetscSNPrintf(why, sizeof(why), "the indenter slid (-scratch_length); it applies to a static indent"));
-  else if (code == 1) PetscCall(PetscSNPrintf(why, sizeof(why), "fewer than 3 unloading points with P >= %g P_max: raise -load_unload_steps", (double)(1 - s->op.fraction)));
+  else if (code == 1) PetscCall(PetscSNPrintf(why, sizeof(why),
+    "fewer than 3 unloading points with P >= %g P_max: raise -load_unload_steps", (double)(1 - s->op.fraction)));
   else if (code) PetscCall(PetscSNPrintf(why, sizeof(why), "the unloading branch is not a power law"));
   else IndOPFromArea(&s->op, &r, pmax->area, &Hs, &Ers, &Es);
   if (!code && info->contact) {
@@ -173,11 +182,13 @@ PetscErrorCode IndSummaryFinish(IndSummary s, const IndIndenter *ind, const IndR
   Put(e, &ne, "h_max_nm", "depth at P_max, h_max", "nm", pmax->depth, PETSC_FALSE);
   Put(e, &ne, "final_depth_nm", "indenter depth at the end", "nm", last->depth, PETSC_FALSE);
   Put(e, &ne, "final_load_uN", "load at the end", "uN", last->load, PETSC_FALSE);
-  Put(e, &ne, "residual_depth_nm", "residual depth (deepest point of the imprint at the end)", "nm", last->deepest, PETSC_FALSE);
+  Put(e, &ne, "residual_depth_nm", "residual depth (deepest point of the imprint at the end)", "nm", last->deepest,
+    PETSC_FALSE);
   Put(e, &ne, "pileup_final_nm", "largest pile-up at the end", "nm", last->pileup, PETSC_FALSE);
   Put(e, &ne, "pileup_at_P_max_nm", "largest pile-up at P_max", "nm", pmax->pileup, PETSC_FALSE);
   Put(e, &ne, "true_area_nm2", "true (projected) contact area at P_max", "nm^2", pmax->area, PETSC_FALSE);
-  Put(e, &ne, "mean_pressure_GPa", "P_max / true area (GPa)", "GPa", pmax->area > 0 ? 1e3 * pmax->load / pmax->area : 0, PETSC_FALSE);
+  Put(e, &ne, "mean_pressure_GPa", "P_max / true area (GPa)", "GPa",
+    pmax->area > 0 ? 1e3 * pmax->load / pmax->area : 0, PETSC_FALSE);
   if (!code) {
     Put(e, &ne, "op_points", "Oliver-Pharr: unloading points fitted", "", (PetscReal)r.npoints, PETSC_TRUE);
     Put(e, &ne, "op_alpha", "fit P = alpha (h - h_f)^m: alpha", "uN/nm^m", r.alpha, PETSC_FALSE);
@@ -190,7 +201,8 @@ PetscErrorCode IndSummaryFinish(IndSummary s, const IndIndenter *ind, const IndR
     Put(e, &ne, "H_GPa", "hardness H", "GPa", r.H, PETSC_FALSE);
     Put(e, &ne, "E_r_GPa", "reduced modulus E_r", "GPa", r.E_r, PETSC_FALSE);
     Put(e, &ne, "E_GPa", "sample modulus E (from E_r, -op_poisson)", "GPa", r.E, PETSC_FALSE);
-    Put(e, &ne, "area_ratio", "true area / A(h_c) (> 1 pile-up, < 1 sink-in)", "", r.A > 0 ? pmax->area / r.A : 0, PETSC_FALSE);
+    Put(e, &ne, "area_ratio", "true area / A(h_c) (> 1 pile-up, < 1 sink-in)", "", r.A > 0 ? pmax->area / r.A : 0,
+      PETSC_FALSE);
     Put(e, &ne, "H_true_GPa", "hardness from the true area", "GPa", Hs, PETSC_FALSE);
     Put(e, &ne, "E_r_true_GPa", "reduced modulus from the true area", "GPa", Ers, PETSC_FALSE);
   }
@@ -202,7 +214,8 @@ PetscErrorCode IndSummaryFinish(IndSummary s, const IndIndenter *ind, const IndR
   Put(e, &ne, "wall_time_s", "wall time of the run", "s", (PetscReal)info->wall, PETSC_FALSE);
 
   if (print) {
-    PetscCall(PetscPrintf(s->comm, "summary (%s indenter%s):\n", IndIndenterTypes[ind->type], write ? "; also in summary.txt and summary.json" : ""));
+    PetscCall(PetscPrintf(s->comm, "summary (%s indenter%s):\n", IndIndenterTypes[ind->type],
+      write ? "; also in summary.txt and summary.json" : ""));
     for (PetscInt k = 0; k < ne; ++k) {
       if (e[k].integer) PetscCall(PetscPrintf(s->comm, "  %-58s %12.0f\n", e[k].label, (double)e[k].value));
       else PetscCall(PetscPrintf(s->comm, "  %-58s %12.6g %s\n", e[k].label, (double)e[k].value, e[k].unit));

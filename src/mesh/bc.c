@@ -1,6 +1,7 @@
 #include "ind_bc.h"
 
-static PetscErrorCode AddSpec(IndBC bc, const char label[], const char option[], PetscInt mask, const PetscReal value[3], IndVectorFn fn, void *ctx)
+static PetscErrorCode AddSpec(IndBC bc, const char label[], const char option[], PetscInt mask,
+  const PetscReal value[3], IndVectorFn fn, void *ctx)
 {
   IndBCSpec *s;
 
@@ -17,12 +18,14 @@ static PetscErrorCode AddSpec(IndBC bc, const char label[], const char option[],
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode ParseComponents(MPI_Comm comm, const char option[], const char entry[], const char *s, PetscInt *mask)
+static PetscErrorCode ParseComponents(MPI_Comm comm, const char option[], const char entry[], const char *s,
+  PetscInt *mask)
 {
   PetscFunctionBeginUser;
   *mask = 0;
   for (; *s && *s != '='; ++s) {
-    PetscCheck(*s >= 'x' && *s <= 'z', comm, PETSC_ERR_ARG_WRONG, "%s: bad component '%c' in '%s' (use x, y, z)", option, *s, entry);
+    PetscCheck(*s >= 'x' && *s <= 'z', comm, PETSC_ERR_ARG_WRONG, "%s: bad component '%c' in '%s' (use x, y, z)",
+      option, *s, entry);
     *mask |= 1 << (*s - 'x');
   }
   PetscCheck(*mask, comm, PETSC_ERR_ARG_WRONG, "%s: no component given in '%s'", option, entry);
@@ -67,7 +70,8 @@ static PetscErrorCode SymmetryAxis(IndBC bc, const char label[], PetscInt *mask,
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &where, 1, MPIU_REAL, MPIU_MIN, comm));
   *plane = where;
   PetscCheck(axes, comm, PETSC_ERR_ARG_WRONG, "-bc_symmetry: surface '%s' has no faces", label);
-  PetscCheck(!skew && (axes == 1 || axes == 2 || axes == 4), comm, PETSC_ERR_SUP, "-bc_symmetry: surface '%s' is not a plane normal to x, y or z", label);
+  PetscCheck(!skew && (axes == 1 || axes == 2 || axes == 4), comm, PETSC_ERR_SUP,
+    "-bc_symmetry: surface '%s' is not a plane normal to x, y or z", label);
   *mask = axes;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -116,7 +120,8 @@ PetscErrorCode IndBCCreate(IndMesh mesh, IndDisc disc, IndBC *out)
     char   *colon = strchr(roller[i], ':');
     PetscInt mask;
     DMLabel  l;
-    PetscCheck(colon, comm, PETSC_ERR_ARG_WRONG, "-bc_roller: '%s' is not surface:components (e.g. bottom:z)", roller[i]);
+    PetscCheck(colon, comm, PETSC_ERR_ARG_WRONG, "-bc_roller: '%s' is not surface:components (e.g. bottom:z)",
+      roller[i]);
     *colon = 0;
     PetscCall(ParseComponents(comm, "-bc_roller", roller[i], colon + 1, &mask));
     PetscCall(IndMeshGetRegionLabel(mesh, roller[i], 2, "-bc_roller", &l));
@@ -128,7 +133,8 @@ PetscErrorCode IndBCCreate(IndMesh mesh, IndDisc disc, IndBC *out)
     PetscInt  mask;
     PetscReal value[3] = {0, 0, 0}, v;
     DMLabel   l;
-    PetscCheck(colon && eq && eq > colon, comm, PETSC_ERR_ARG_WRONG, "-bc_displacement: '%s' is not surface:component=value (e.g. top:z=-10)", disp[i]);
+    PetscCheck(colon && eq && eq > colon, comm, PETSC_ERR_ARG_WRONG,
+      "-bc_displacement: '%s' is not surface:component=value (e.g. top:z=-10)", disp[i]);
     *colon = 0;
     PetscCall(ParseComponents(comm, "-bc_displacement", disp[i], colon + 1, &mask));
     v = strtod(eq + 1, &end);
@@ -160,7 +166,8 @@ PetscErrorCode IndBCAddFunction(IndBC bc, const char label[], PetscInt mask, Ind
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode ProjectWrapper(PetscInt dim, PetscReal t, const PetscReal x[], PetscInt Nc, PetscScalar *u, void *ctx)
+static PetscErrorCode ProjectWrapper(PetscInt dim, PetscReal t, const PetscReal x[], PetscInt Nc, PetscScalar *u,
+  void *ctx)
 {
   IndBCSpec *s = (IndBCSpec *)ctx;
   PetscReal  v[3];
@@ -205,7 +212,8 @@ PetscErrorCode IndBCSetUp(IndBC bc)
 
     PetscCall(DMGetLabel(dm, sp->label, &l));
     if (sp->fn) {
-      PetscErrorCode (*funcs[1])(PetscInt, PetscReal, const PetscReal[], PetscInt, PetscScalar *, void *) = {ProjectWrapper};
+      PetscErrorCode (*funcs[1])(PetscInt, PetscReal, const PetscReal[], PetscInt, PetscScalar *,
+        void *) = {ProjectWrapper};
       void *ctxs[1] = {sp};
       PetscCall(DMGetLocalVector(dm, &Floc));
       PetscCall(DMProjectFunctionLocal(dm, 0.0, funcs, ctxs, INSERT_ALL_VALUES, Floc));

@@ -9,7 +9,8 @@ static PetscErrorCode CacheReferenceTabulation(IndDisc disc)
   PetscCall(PetscFEGetCellTabulation(disc->fe, 1, &T));
   Nb = T->Nb;
   Nc = T->Nc;
-  PetscCheck(Nc == 3 && Nb % 3 == 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "Unexpected vector basis layout (Nb %" PetscInt_FMT ", Nc %" PetscInt_FMT ")", Nb, Nc);
+  PetscCheck(Nc == 3 && Nb % 3 == 0, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+    "Unexpected vector basis layout (Nb %" PetscInt_FMT ", Nc %" PetscInt_FMT ")", Nb, Nc);
   disc->nb   = Nb / 3;
   disc->ndof = Nb;
   PetscCall(PetscMalloc2(disc->nq * disc->nb, &disc->N, disc->nq * disc->nb * 3, &disc->dN));
@@ -19,10 +20,12 @@ static PetscErrorCode CacheReferenceTabulation(IndDisc disc)
     for (PetscInt b = 0; b < Nb; ++b)
       for (PetscInt c = 0; c < Nc; ++c) {
         PetscReal v = T->T[0][(q * Nb + b) * Nc + c];
-        if (c != b % 3) PetscCheck(PetscAbsReal(v) < 1e-12, PETSC_COMM_SELF, PETSC_ERR_PLIB, "Vector basis is not node-major with interleaved components");
+        if (c != b % 3) PetscCheck(PetscAbsReal(v) < 1e-12, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+          "Vector basis is not node-major with interleaved components");
         else if (c == 0) {
           disc->N[q * disc->nb + b / 3] = v;
-          for (PetscInt d = 0; d < 3; ++d) disc->dN[(q * disc->nb + b / 3) * 3 + d] = T->T[1][((q * Nb + b) * Nc + c) * 3 + d];
+          for (PetscInt d = 0; d < 3; ++d) disc->dN[(q * disc->nb + b / 3) * 3 + d] = T->T[1][((q * Nb + b) * Nc + c)
+            * 3 + d];
         }
       }
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -49,7 +52,8 @@ static PetscErrorCode CoordinateBasis(PetscBool simplex, PetscQuadrature quad, P
     }
     PetscCall(PetscFEDestroy(&fe));
   }
-  SETERRQ(PETSC_COMM_SELF, PETSC_ERR_SUP, "Cells with %" PetscInt_FMT " coordinate nodes are not supported (first- or second-order meshes only)", nn);
+  SETERRQ(PETSC_COMM_SELF, PETSC_ERR_SUP,
+    "Cells with %" PetscInt_FMT " coordinate nodes are not supported (first- or second-order meshes only)", nn);
 }
 
 static PetscErrorCode CacheCells(IndDisc disc, PetscBool simplex, PetscQuadrature quad)
@@ -70,7 +74,9 @@ static PetscErrorCode CacheCells(IndDisc disc, PetscBool simplex, PetscQuadratur
   disc->ncell = cEnd - disc->cStart;
   PetscCall(DMGetLocalSection(dm, &s));
   PetscCall(DMGetLocalToGlobalMapping(dm, &ltog));
-  PetscCall(PetscMalloc5(disc->ncell * disc->ndof, &disc->lidx, disc->ncell * disc->ndof, &disc->gidx, disc->ncell * disc->nq, &disc->wdetJ, disc->ncell * disc->nq * 9, &disc->invJ, disc->ncell * disc->nq * 3, &disc->xq));
+  PetscCall(PetscMalloc5(disc->ncell * disc->ndof, &disc->lidx, disc->ncell * disc->ndof, &disc->gidx,
+    disc->ncell * disc->nq, &disc->wdetJ, disc->ncell * disc->nq * 9, &disc->invJ, disc->ncell * disc->nq * 3,
+    &disc->xq));
   PetscCall(PetscMalloc3(disc->nq * 3, &v, disc->nq * 9, &J, disc->nq, &detJ));
   PetscCall(DMGetCoordinateDM(dm, &cdm));
   PetscCall(DMGetLocalSection(cdm, &cs));
@@ -80,7 +86,8 @@ static PetscErrorCode CacheCells(IndDisc disc, PetscBool simplex, PetscQuadratur
     PetscReal *iJ = disc->invJ + i * disc->nq * 9;
 
     PetscCall(DMPlexGetClosureIndices(dm, s, s, c, PETSC_TRUE, &n, &idx, NULL, NULL));
-    PetscCheck(n == disc->ndof, PETSC_COMM_SELF, PETSC_ERR_PLIB, "Cell %" PetscInt_FMT " has %" PetscInt_FMT " closure dofs, expected %" PetscInt_FMT, c, n, disc->ndof);
+    PetscCheck(n == disc->ndof, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+      "Cell %" PetscInt_FMT " has %" PetscInt_FMT " closure dofs, expected %" PetscInt_FMT, c, n, disc->ndof);
     PetscCall(PetscArraycpy(disc->lidx + i * n, idx, n));
     PetscCall(DMPlexRestoreClosureIndices(dm, s, s, c, PETSC_TRUE, &n, &idx, NULL, NULL));
 
@@ -93,7 +100,9 @@ static PetscErrorCode CacheCells(IndDisc disc, PetscBool simplex, PetscQuadratur
         PetscCall(PetscArraycpy(iJ + q * 9, iJ, 9));
       }
     for (PetscInt q = 0; q < disc->nq; ++q) {
-      PetscCheck(detJ[q] > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "Cell %" PetscInt_FMT " is inverted or degenerate (det J = %g at quadrature point %" PetscInt_FMT ")", c, (double)detJ[q], q);
+      PetscCheck(detJ[q] > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG,
+        "Cell %" PetscInt_FMT " is inverted or degenerate (det J = %g at quadrature point %" PetscInt_FMT ")", c,
+        (double)detJ[q], q);
       disc->wdetJ[i * disc->nq + q] = disc->w[q] * detJ[q];
     }
     /* Not DMPlexReferenceToCoordinates: in PETSc 3.18 it re-sorts a mesh label on every call, which
@@ -107,7 +116,8 @@ static PetscErrorCode CacheCells(IndDisc disc, PetscBool simplex, PetscQuadratur
         nn = nc / 3;
         PetscCall(CoordinateBasis(simplex, quad, disc->nq, nn, &Nx));
       }
-      PetscCheck(nc == 3 * nn, PETSC_COMM_SELF, PETSC_ERR_SUP, "Cell %" PetscInt_FMT " has %" PetscInt_FMT " coordinate values, expected %" PetscInt_FMT, c, nc, 3 * nn);
+      PetscCheck(nc == 3 * nn, PETSC_COMM_SELF, PETSC_ERR_SUP,
+        "Cell %" PetscInt_FMT " has %" PetscInt_FMT " coordinate values, expected %" PetscInt_FMT, c, nc, 3 * nn);
       for (PetscInt q = 0; q < disc->nq; ++q)
         for (int d = 0; d < 3; ++d) {
           xq[q * 3 + d] = 0.0;
@@ -144,8 +154,10 @@ PetscErrorCode IndDiscCreate(IndMesh mesh, IndDisc *out)
      history exactly; PETSc's default rule has 8, all in the same state, at 8 times the cost of
      every residual, Jacobian and history update. */
   if (qorder == PETSC_DETERMINE && mesh->simplex && disc->degree == 1) qorder = 0;
-  PetscCheck(disc->degree == 1 || disc->degree == 2, comm, PETSC_ERR_ARG_OUTOFRANGE, "-disc_degree must be 1 or 2, got %" PetscInt_FMT, disc->degree);
-  PetscCheck(qorder == PETSC_DETERMINE || (qorder >= 0 && qorder <= 12), comm, PETSC_ERR_ARG_OUTOFRANGE, "-disc_quadrature_order must lie in [0, 12], got %" PetscInt_FMT, qorder);
+  PetscCheck(disc->degree == 1 || disc->degree == 2, comm, PETSC_ERR_ARG_OUTOFRANGE,
+    "-disc_degree must be 1 or 2, got %" PetscInt_FMT, disc->degree);
+  PetscCheck(qorder == PETSC_DETERMINE || (qorder >= 0 && qorder <= 12), comm, PETSC_ERR_ARG_OUTOFRANGE,
+    "-disc_quadrature_order must lie in [0, 12], got %" PetscInt_FMT, qorder);
 
   PetscCall(PetscFECreateLagrange(comm, 3, 3, mesh->simplex, disc->degree, qorder, &disc->fe));
   PetscCall(PetscObjectSetName((PetscObject)disc->fe, "displacement"));

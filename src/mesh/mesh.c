@@ -102,7 +102,8 @@ static PetscErrorCode ReadGmshPhysicalNames(MPI_Comm comm, const char file[], In
       for (int k = 0; k < n; ++k)
         if (dims[k] == d && tags[k] == gvals[i]) name = names[k];
       if (!name) {
-        PetscCall(PetscSNPrintf(fallback, sizeof(fallback), "%s%" PetscInt_FMT, d == 3 ? "volume" : "surface", gvals[i]));
+        PetscCall(PetscSNPrintf(fallback, sizeof(fallback), "%s%" PetscInt_FMT, d == 3 ? "volume" : "surface",
+          gvals[i]));
         name = fallback;
       }
       PetscCheck(mesh->nregions < IND_MAX_REGIONS, comm, PETSC_ERR_SUP,
@@ -178,7 +179,8 @@ static PetscErrorCode CreateBoxMesh(MPI_Comm comm, IndMesh mesh)
   PetscOptionsEnd();
   for (int d = 0; d < 3; ++d) {
     PetscCheck(faces[d] > 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-dm_plex_box_faces needs three positive counts");
-    PetscCheck(upper[d] > lower[d], comm, PETSC_ERR_ARG_OUTOFRANGE, "-dm_plex_box_upper must exceed -dm_plex_box_lower in every direction");
+    PetscCheck(upper[d] > lower[d], comm, PETSC_ERR_ARG_OUTOFRANGE,
+      "-dm_plex_box_upper must exceed -dm_plex_box_lower in every direction");
   }
   PetscCall(DMPlexCreateBoxMesh(comm, 3, PETSC_FALSE, faces, lower, upper, NULL, PETSC_TRUE, &mesh->dm));
   PetscCall(DMCreateLabel(mesh->dm, "Cell Sets"));
@@ -198,17 +200,20 @@ static PetscErrorCode CheckCellTypes(MPI_Comm comm, IndMesh mesh)
 
   PetscFunctionBeginUser;
   PetscCall(DMGetDimension(mesh->dm, &dim));
-  PetscCheck(dim == 3, comm, PETSC_ERR_ARG_WRONG, "Mesh '%s' is %" PetscInt_FMT "D; indent needs a 3D mesh", mesh->source, dim);
+  PetscCheck(dim == 3, comm, PETSC_ERR_ARG_WRONG, "Mesh '%s' is %" PetscInt_FMT "D; indent needs a 3D mesh",
+    mesh->source, dim);
   PetscCall(DMPlexGetHeightStratum(mesh->dm, 0, &cStart, &cEnd));
   for (PetscInt c = cStart; c < cEnd; ++c) {
     DMPolytopeType ct;
     PetscCall(DMPlexGetCellType(mesh->dm, c, &ct));
     if (ct == DM_POLYTOPE_TETRAHEDRON) flags[0] = 1;
     else if (ct == DM_POLYTOPE_HEXAHEDRON) flags[1] = 1;
-    else SETERRQ(comm, PETSC_ERR_SUP, "Mesh '%s' has a cell of type %s; only tetrahedra and hexahedra are supported", mesh->source, DMPolytopeTypes[ct]);
+    else SETERRQ(comm, PETSC_ERR_SUP, "Mesh '%s' has a cell of type %s; only tetrahedra and hexahedra are supported",
+      mesh->source, DMPolytopeTypes[ct]);
   }
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, flags, 2, MPIU_INT, MPI_MAX, comm));
-  PetscCheck(flags[0] + flags[1] == 1, comm, PETSC_ERR_SUP, "Mesh '%s' mixes tetrahedra and hexahedra (or has no cells)", mesh->source);
+  PetscCheck(flags[0] + flags[1] == 1, comm, PETSC_ERR_SUP,
+    "Mesh '%s' mixes tetrahedra and hexahedra (or has no cells)", mesh->source);
   mesh->simplex = flags[0] ? PETSC_TRUE : PETSC_FALSE;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -242,7 +247,8 @@ static PetscErrorCode PerturbInteriorVertices(IndMesh mesh, PetscReal frac)
   for (PetscInt e = PetscMax(eStart, csStart); e < PetscMin(eEnd, csEnd); ++e) {
     PetscInt dof;
     PetscCall(PetscSectionGetDof(cs, e, &dof));
-    PetscCheck(dof == 0, PETSC_COMM_SELF, PETSC_ERR_SUP, "-mesh_perturb supports only straight-sided (first-order) meshes");
+    PetscCheck(dof == 0, PETSC_COMM_SELF, PETSC_ERR_SUP,
+      "-mesh_perturb supports only straight-sided (first-order) meshes");
   }
   PetscCall(DMGetCoordinatesLocal(dm, &X));
   PetscCall(VecGetArray(X, &x));
@@ -391,14 +397,16 @@ PetscErrorCode IndMeshCreate(MPI_Comm comm, IndMesh *out)
     NULL, perturb, &perturb, NULL));
   PetscOptionsEnd();
   PetscCheck(refine >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-mesh_refine must be >= 0, got %" PetscInt_FMT, refine);
-  PetscCheck(perturb >= 0 && perturb < 0.5, comm, PETSC_ERR_ARG_OUTOFRANGE, "-mesh_perturb must lie in [0, 0.5), got %g", (double)perturb);
+  PetscCheck(perturb >= 0 && perturb < 0.5, comm, PETSC_ERR_ARG_OUTOFRANGE,
+    "-mesh_perturb must lie in [0, 0.5), got %g", (double)perturb);
 
   PetscCall(PetscLogEventBegin(IndLog.mesh_create, 0, 0, 0, 0));
   if (has_file) {
     PetscBool exists;
     size_t    len;
     PetscCall(PetscTestFile(file, 'r', &exists));
-    PetscCheck(exists, comm, PETSC_ERR_FILE_OPEN, "Mesh file '%s' (-mesh_file) does not exist or is not readable", file);
+    PetscCheck(exists, comm, PETSC_ERR_FILE_OPEN, "Mesh file '%s' (-mesh_file) does not exist or is not readable",
+      file);
     PetscCall(PetscStrlen(file, &len));
     if (len > 4) PetscCall(PetscStrcmp(file + len - 4, ".geo", &is_geo));
     if (is_geo) {
@@ -481,7 +489,8 @@ PetscErrorCode IndMeshGetRegionLabel(IndMesh mesh, const char name[], PetscInt d
       PetscCall(PetscStrlcat(list, mesh->regions[i].name, sizeof(list)));
     }
   }
-  SETERRQ(PetscObjectComm((PetscObject)mesh->dm), PETSC_ERR_ARG_WRONG, "Mesh '%s' has no %s named '%s' (required by %s); its %ss are:%s", mesh->source, dim == 3 ? "volume" : "surface",
+  SETERRQ(PetscObjectComm((PetscObject)mesh->dm), PETSC_ERR_ARG_WRONG,
+    "Mesh '%s' has no %s named '%s' (required by %s); its %ss are:%s", mesh->source, dim == 3 ? "volume" : "surface",
           name, option, dim == 3 ? "volume" : "surface", list[0] ? list : " (none)");
 }
 

@@ -28,8 +28,10 @@ static PetscErrorCode SetMetisPartition(DM dm, PetscPartitioner part)
     opts[METIS_OPTION_SEED]    = 1; /* same partition every run */
     opts[METIS_OPTION_NUMBERING] = 0;
     if (size > 1) {
-      int status = METIS_PartGraphKway(&n, &ncon, xadj, adj, NULL, NULL, NULL, &nparts, NULL, NULL, opts, &objval, where);
-      PetscCheck(status == METIS_OK, PETSC_COMM_SELF, PETSC_ERR_LIB, "METIS_PartGraphKway failed with status %d", status);
+      int status = METIS_PartGraphKway(&n, &ncon, xadj, adj, NULL, NULL, NULL, &nparts, NULL, NULL, opts, &objval,
+        where);
+      PetscCheck(status == METIS_OK, PETSC_COMM_SELF, PETSC_ERR_LIB, "METIS_PartGraphKway failed with status %d",
+        status);
     } else
       for (PetscInt i = 0; i < nv; ++i) where[i] = 0;
     for (PetscInt i = 0; i < nv; ++i) sizes[where[i]]++;
@@ -69,7 +71,8 @@ PetscErrorCode IndMeshSetPartitioner(DM dm)
 #if defined(INDENT_HAVE_METIS)
     PetscCall(SetMetisPartition(dm, part));
 #else
-    SETERRQ(comm, PETSC_ERR_SUP, "-mesh_partitioner metis: this indent was built without METIS (install libmetis-dev and reconfigure)");
+    SETERRQ(comm, PETSC_ERR_SUP,
+      "-mesh_partitioner metis: this indent was built without METIS (install libmetis-dev and reconfigure)");
 #endif
     break;
   default:

@@ -43,7 +43,8 @@ static inline void Strain(PetscInt nb, const PetscReal *G, const PetscReal *u, P
 {
   for (int k = 0; k < 6; ++k) eps[k] = 0.0;
   for (PetscInt a = 0; a < nb; ++a) {
-    const PetscReal gx = G[3 * a], gy = G[3 * a + 1], gz = G[3 * a + 2], ux = u[3 * a], uy = u[3 * a + 1], uz = u[3 * a + 2];
+    const PetscReal gx = G[3 * a], gy = G[3 * a + 1], gz = G[3 * a + 2], ux = u[3 * a], uy = u[3 * a + 1],
+      uz = u[3 * a + 2];
     eps[0] += gx * ux;
     eps[1] += gy * uy;
     eps[2] += gz * uz;
@@ -121,7 +122,8 @@ PetscErrorCode IndAssemblyResidual(IndAssembly a, Vec Uloc, Vec Floc)
 
 /* Ke += w B^T D B on and above the diagonal, using the sparsity of B: column 3b+c of B holds the
    gradient of N_b. D is symmetric (elastic and consistent plastic tangents alike), so is Ke. */
-static inline void AddBtDB(PetscInt nb, const PetscReal *G, const PetscReal D[36], PetscReal w, PetscReal *DB, PetscReal *Ke)
+static inline void AddBtDB(PetscInt nb, const PetscReal *G, const PetscReal D[36], PetscReal w, PetscReal *DB,
+  PetscReal *Ke)
 {
   const PetscInt nd = 3 * nb;
   for (PetscInt b = 0; b < nb; ++b) {

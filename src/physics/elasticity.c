@@ -20,6 +20,7 @@ void IndElasticTangent(PetscReal kappa, PetscReal mu, PetscReal D[36])
 PetscReal IndVonMises(const PetscReal s[6])
 {
   const PetscReal p = (s[0] + s[1] + s[2]) / 3.0;
-  const PetscReal j2 = 0.5 * (PetscSqr(s[0] - p) + PetscSqr(s[1] - p) + PetscSqr(s[2] - p)) + PetscSqr(s[3]) + PetscSqr(s[4]) + PetscSqr(s[5]);
+  const PetscReal j2 = 0.5 * (PetscSqr(s[0] - p) + PetscSqr(s[1] - p) + PetscSqr(s[2] - p)) + PetscSqr(s[3])
+    + PetscSqr(s[4]) + PetscSqr(s[5]);
   return PetscSqrtReal(3.0 * j2);
 }

@@ -3,7 +3,8 @@
 #if defined(PETSC_USE_COMPLEX)
   #error "indent stores quadrature-point history as real numbers: build against a real PETSc"
 #endif
-_Static_assert(sizeof(IndPlasticState) == IND_HISTORY_DP * sizeof(PetscReal), "IndPlasticState must be IND_HISTORY_DP packed reals");
+_Static_assert(sizeof(IndPlasticState) == IND_HISTORY_DP * sizeof(PetscReal),
+  "IndPlasticState must be IND_HISTORY_DP packed reals");
 
 PetscErrorCode IndHistoryCreate(IndDisc disc, IndHistory *out)
 {
@@ -33,14 +34,17 @@ PetscErrorCode IndHistoryCreate(IndDisc disc, IndHistory *out)
   /* The cell loop indexes the history as i * stride: with no cell overlap every cell is owned, so the
      owned part of the global vector is exactly that; check it rather than assume it. */
   PetscCall(VecGetLocalSize(h->committed, &n));
-  PetscCheck(n == disc->ncell * h->stride, PETSC_COMM_SELF, PETSC_ERR_PLIB, "History holds %" PetscInt_FMT " values for %" PetscInt_FMT " local cells of %" PetscInt_FMT, n, disc->ncell, h->stride);
+  PetscCheck(n == disc->ncell * h->stride, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+    "History holds %" PetscInt_FMT " values for %" PetscInt_FMT " local cells of %" PetscInt_FMT, n, disc->ncell,
+    h->stride);
   PetscCall(DMGetGlobalSection(h->dm, &gs));
   {
     PetscInt rstart, off;
     PetscCall(VecGetOwnershipRange(h->committed, &rstart, NULL));
     for (PetscInt i = 0; i < disc->ncell; ++i) {
       PetscCall(PetscSectionGetOffset(gs, disc->cStart + i, &off));
-      PetscCheck(off - rstart == i * h->stride, PETSC_COMM_SELF, PETSC_ERR_PLIB, "History of cell %" PetscInt_FMT " is not at i * stride", disc->cStart + i);
+      PetscCheck(off - rstart == i * h->stride, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+        "History of cell %" PetscInt_FMT " is not at i * stride", disc->cStart + i);
     }
   }
   *out = h;

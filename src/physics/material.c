@@ -4,10 +4,12 @@
 const char *const IndModelTypes[] = {"elastic", "plastic", "IndModel", "IND_MODEL_", NULL};
 
 /* A parameter the plastic model needs and has no default for. */
-static PetscErrorCode RequirePlastic(MPI_Comm comm, const char region[], const char name[], PetscBool set, const char what[])
+static PetscErrorCode RequirePlastic(MPI_Comm comm, const char region[], const char name[], PetscBool set,
+  const char what[])
 {
   PetscFunctionBeginUser;
-  PetscCheck(set, comm, PETSC_ERR_ARG_WRONG, "Region '%s' is plastic (-%s_model plastic) but option -%s_%s (%s) is missing", region, region, region, name, what);
+  PetscCheck(set, comm, PETSC_ERR_ARG_WRONG,
+    "Region '%s' is plastic (-%s_model plastic) but option -%s_%s (%s) is missing", region, region, region, name, what);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -67,7 +69,8 @@ static PetscErrorCode ReadMaterial(MPI_Comm comm, const char region[], IndMateri
   PetscCheck(m->young > 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "%s must be > 0 (GPa), got %g", opt, (double)m->young);
   PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%spoisson", prefix));
   PetscCheck(has_nu, comm, PETSC_ERR_ARG_WRONG, "Region '%s' needs a material: option %s is missing", region, opt);
-  PetscCheck(m->poisson > -1.0 && m->poisson < 0.5, comm, PETSC_ERR_ARG_OUTOFRANGE, "%s must lie in (-1, 0.5), got %g", opt, (double)m->poisson);
+  PetscCheck(m->poisson > -1.0 && m->poisson < 0.5, comm, PETSC_ERR_ARG_OUTOFRANGE,
+    "%s must lie in (-1, 0.5), got %g", opt, (double)m->poisson);
   IndElasticModuli(m->young, m->poisson, &m->kappa, &m->mu);
   m->plastic.kappa        = m->kappa;
   m->plastic.mu           = m->mu;
@@ -103,7 +106,9 @@ PetscErrorCode IndMaterialsCreate(IndMesh mesh, IndDisc disc, IndMaterials *out)
       for (PetscInt k = 0; k < n; ++k) {
         PetscInt i = c[k] - disc->cStart;
         if (i < 0 || i >= disc->ncell) continue;
-        PetscCheck(mats->cell_material[i] < 0, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "Cell %" PetscInt_FMT " lies in two volume regions, '%s' and '%s'", c[k], mats->mat[mats->cell_material[i]].region, mesh->regions[r].name);
+        PetscCheck(mats->cell_material[i] < 0, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG,
+          "Cell %" PetscInt_FMT " lies in two volume regions, '%s' and '%s'", c[k],
+          mats->mat[mats->cell_material[i]].region, mesh->regions[r].name);
         mats->cell_material[i] = mats->n;
       }
       PetscCall(ISRestoreIndices(cells, &c));

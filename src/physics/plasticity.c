@@ -20,22 +20,29 @@ PetscErrorCode IndPlasticParamsCheck(const IndPlasticParams *m, const char prefi
   const char *pre = prefix ? prefix : "";
 
   PetscFunctionBeginUser;
-  PetscCheck(m->mu > 0 && m->kappa > 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "Elastic moduli must be > 0, got mu = %g, kappa = %g GPa: check -%syoung and -%spoisson", (double)m->mu, (double)m->kappa, pre, pre);
+  PetscCheck(m->mu > 0 && m->kappa > 0, comm, PETSC_ERR_ARG_OUTOFRANGE,
+    "Elastic moduli must be > 0, got mu = %g, kappa = %g GPa: check -%syoung and -%spoisson", (double)m->mu,
+    (double)m->kappa, pre, pre);
   if (m->elastic_only) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCheck(m->R0 > 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-%syield must be > 0 (GPa), got %g", pre, (double)m->R0);
   PetscCheck(m->H >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-%skinematic must be >= 0 (GPa), got %g", pre, (double)m->H);
-  PetscCheck(m->max_iterations >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sreturn_max_it must be >= 0 (0: the default, 100), got %" PetscInt_FMT, pre, m->max_iterations);
+  PetscCheck(m->max_iterations >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE,
+    "-%sreturn_max_it must be >= 0 (0: the default, 100), got %" PetscInt_FMT, pre, m->max_iterations);
   switch (m->hardening) {
   case IND_HARDENING_VOCE:
-    PetscCheck(m->Rs > 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-%ssaturation must be > 0 (GPa), got %g", pre, (double)m->Rs);
-    PetscCheck(m->gamma >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-%svoce_rate must be >= 0, got %g", pre, (double)m->gamma);
+    PetscCheck(m->Rs > 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-%ssaturation must be > 0 (GPa), got %g", pre,
+      (double)m->Rs);
+    PetscCheck(m->gamma >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-%svoce_rate must be >= 0, got %g", pre,
+      (double)m->gamma);
     /* Softening (Rs < R0) is allowed while the return equation stays strictly decreasing in dp,
        which keeps its root unique and the tangent finite. */
     PetscCheck(m->gamma * (m->R0 - m->Rs) < 3.0 * m->mu + m->H, comm, PETSC_ERR_ARG_OUTOFRANGE,
-               "Voce softening too steep: -%svoce_rate * (-%syield - -%ssaturation) = %g GPa must be < 3 mu + H = %g GPa", pre, pre, pre, (double)(m->gamma * (m->R0 - m->Rs)), (double)(3.0 * m->mu + m->H));
+               "Voce softening too steep: -%svoce_rate * (-%syield - -%ssaturation) = %g GPa must be < 3 mu + H = %g "
+                 "GPa", pre, pre, pre, (double)(m->gamma * (m->R0 - m->Rs)), (double)(3.0 * m->mu + m->H));
     break;
   case IND_HARDENING_LINEAR:
-    PetscCheck(m->h >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-%shardening_slope must be >= 0 (GPa), got %g", pre, (double)m->h);
+    PetscCheck(m->h >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-%shardening_slope must be >= 0 (GPa), got %g", pre,
+      (double)m->h);
     break;
   default:
     SETERRQ(comm, PETSC_ERR_ARG_OUTOFRANGE, "Unknown hardening law %d for region prefix '%s'", (int)m->hardening, pre);
@@ -72,7 +79,8 @@ static IndPlasticStatus SolveReturn(const IndPlasticParams *m, PetscReal qE, Pet
   return IND_PLASTIC_NOT_CONVERGED;
 }
 
-IndPlasticStatus IndPlasticUpdate(const IndPlasticParams *m, const PetscReal eps[6], const IndPlasticState *old, IndPlasticState *new_state, PetscReal sigma[6], PetscReal D[36], PetscReal *dp_out)
+IndPlasticStatus IndPlasticUpdate(const IndPlasticParams *m, const PetscReal eps[6], const IndPlasticState *old,
+  IndPlasticState *new_state, PetscReal sigma[6], PetscReal D[36], PetscReal *dp_out)
 {
   const IndPlasticState o  = *old; /* new_state may alias old */
   const PetscReal       mu = m->mu, H = m->H, tr = eps[0] + eps[1] + eps[2], s32 = PetscSqrtReal(1.5);

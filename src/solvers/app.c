@@ -38,12 +38,15 @@ PetscErrorCode IndAppCreate(MPI_Comm comm, IndApp *out)
     strftime(app->start_time, sizeof(app->start_time), "%Y-%m-%dT%H:%M:%SZ", &utc);
   }
   PetscOptionsBegin(comm, NULL, IND_TITLE "Run", "Run");
-  PetscCall(IndOptionsEnum("-load_predictor", "Start of each step's Newton iteration", IndPredictorTypes, (PetscEnum)app->predictor,
+  PetscCall(IndOptionsEnum("-load_predictor", "Start of each step's Newton iteration", IndPredictorTypes,
+    (PetscEnum)app->predictor,
                            (PetscEnum *)&app->predictor, NULL));
   PetscCall(IndOptionsBool("-quiet", "Print nothing but errors and warnings", app->quiet, &app->quiet, NULL));
-  PetscCall(IndOptionsInt("-checkpoint_every", "Write <output_dir>/checkpoint.h5 every N accepted steps (0: only on SIGTERM, SIGINT, SIGUSR1)",
+  PetscCall(IndOptionsInt("-checkpoint_every",
+    "Write <output_dir>/checkpoint.h5 every N accepted steps (0: only on SIGTERM, SIGINT, SIGUSR1)",
                           NULL, app->checkpoint_every, &app->checkpoint_every, NULL));
-  PetscCall(IndOptionsInt("-checkpoint_stop_after_step", "Stop with a checkpoint after this accepted step, as on SIGTERM (for tests)",
+  PetscCall(IndOptionsInt("-checkpoint_stop_after_step",
+    "Stop with a checkpoint after this accepted step, as on SIGTERM (for tests)",
                           "-1: never", app->stop_after, &app->stop_after, NULL));
   PetscCall(IndOptionsInt("-csm_every", "Hardness and modulus against depth: the contact stiffness of a small elastic "
                           "unloading every N accepted loading steps, into <output_dir>/csm.csv (0: never)", NULL,
@@ -72,10 +75,12 @@ PetscErrorCode IndAppCreate(MPI_Comm comm, IndApp *out)
   PetscCall(IndContactCreate(app->mesh, app->disc, app->bc, &app->contact));
   /* An indentation unloads by default; a run of prescribed displacements only loads. */
   PetscCall(IndLoadPathSetFromOptions(comm, app->contact ? PETSC_TRUE : PETSC_FALSE, &app->path));
-  PetscCheck(!app->contact || app->path.depth_max > 0, comm, PETSC_ERR_ARG_WRONG, "-indenter_type needs the largest depth -load_depth (nm) > 0");
+  PetscCheck(!app->contact || app->path.depth_max > 0, comm, PETSC_ERR_ARG_WRONG,
+    "-indenter_type needs the largest depth -load_depth (nm) > 0");
   PetscCheck(app->contact || app->path.force_max == 0, comm, PETSC_ERR_ARG_WRONG,
     "-load_force needs an indenter: -indenter_type");
-  PetscCheck(app->contact || app->path.depth_max == 0, comm, PETSC_ERR_ARG_WRONG, "-load_depth needs an indenter: -indenter_type");
+  PetscCheck(app->contact || app->path.depth_max == 0, comm, PETSC_ERR_ARG_WRONG,
+    "-load_depth needs an indenter: -indenter_type");
   PetscCall(IndScratchSetFromOptions(comm, app->contact ? PETSC_TRUE : PETSC_FALSE, &app->scratch));
   if (app->contact && !IndHelpListing()) PetscCall(IndScratchSetUp(&app->scratch, app->contact, app->bc));
   if (app->scratch.length > 0) IndLoadPathSetScratch(&app->path, app->scratch.steps);
@@ -108,7 +113,9 @@ PetscErrorCode IndAppCreate(MPI_Comm comm, IndApp *out)
   if (!app->quiet) {
     PetscMPIInt size;
     PetscCallMPI(MPI_Comm_size(comm, &size));
-    PetscCall(PetscPrintf(comm, "indent: mesh %s, %" PetscInt_FMT " %s, %s%" PetscInt_FMT " elements, %" PetscInt_FMT " dofs, %d rank%s\n", app->mesh->source, ncell, app->mesh->simplex ? "tetrahedra" : "hexahedra",
+    PetscCall(PetscPrintf(comm,
+      "indent: mesh %s, %" PetscInt_FMT " %s, %s%" PetscInt_FMT " elements, %" PetscInt_FMT " dofs, %d rank%s\n",
+      app->mesh->source, ncell, app->mesh->simplex ? "tetrahedra" : "hexahedra",
                           app->mesh->simplex ? "P" : "Q", app->disc->degree, ndof, size, size > 1 ? "s" : ""));
   }
   *out = app;
@@ -294,7 +301,8 @@ static PetscErrorCode Checkpoint(IndApp app)
   if (!app->quiet) {
     struct stat st;
     double      mb = stat(app->rundir.checkpoint, &st) ? 0.0 : (double)st.st_size / (1 << 20);
-    PetscCall(PetscPrintf(app->comm, "  checkpoint after step %" PetscInt_FMT ": %.1f MB in %.2f s\n", app->path.accepted, mb,
+    PetscCall(PetscPrintf(app->comm, "  checkpoint after step %" PetscInt_FMT ": %.1f MB in %.2f s\n",
+      app->path.accepted, mb,
                           (double)(t1 - t0)));
   }
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -324,7 +332,8 @@ static PetscErrorCode Stop(IndApp app, int signum)
                           "continue with the same options and -restart %s\n",
                           name, app->path.accepted, app->rundir.checkpoint, app->rundir.dir));
   else
-    PetscCall(PetscPrintf(app->comm, "indent: stopped by %s after step %" PetscInt_FMT " (no files, so no checkpoint)\n",
+    PetscCall(PetscPrintf(app->comm,
+      "indent: stopped by %s after step %" PetscInt_FMT " (no files, so no checkpoint)\n",
                           name, app->path.accepted));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -352,7 +361,8 @@ PetscErrorCode IndAppRun(IndApp app)
     if (lp->force_max > 0) PetscCall(SolveLoadStep(app, t, &r));
     else PetscCall(IndAppSolveStep(app, t, &r));
     if (!r.converged) {
-      if (!app->quiet) PetscCall(PetscPrintf(app->comm, "  step to t = %.6f rejected (%s): cutting the increment\n", (double)t, r.why));
+      if (!app->quiet) PetscCall(PetscPrintf(app->comm, "  step to t = %.6f rejected (%s): cutting the increment\n",
+        (double)t, r.why));
       PetscCall(IndLoadPathReject(lp, app->comm, r.why));
       continue;
     }
@@ -360,16 +370,25 @@ PetscErrorCode IndAppRun(IndApp app)
     IndLoadPathAccept(lp, r.outer > 1 ? (r.newton + r.outer - 1) / r.outer : r.newton);
     if (!app->quiet) {
       if (app->contact)
-        PetscCall(PetscPrintf(app->comm, "step %3" PetscInt_FMT "  depth %9.4f nm  load %11.5f uN  contact %5" PetscInt_FMT " (slip %5" PetscInt_FMT ")  uzawa %2" PetscInt_FMT "  newton %3" PetscInt_FMT "  linear %5" PetscInt_FMT "  plastic %7" PetscInt_FMT "  cutbacks %2" PetscInt_FMT "  %.2f s\n", lp->accepted, (double)r.depth,
-                              (double)(r.contact.load * 1e-3), r.contact.contact, r.contact.slip, r.outer, r.newton, r.linear, r.plastic, lp->cutbacks, r.seconds));
+        PetscCall(PetscPrintf(app->comm,
+          "step %3" PetscInt_FMT "  depth %9.4f nm  load %11.5f uN  contact %5" PetscInt_FMT " (slip %5" PetscInt_FMT
+            ")  uzawa %2" PetscInt_FMT "  newton %3" PetscInt_FMT "  linear %5" PetscInt_FMT
+            "  plastic %7" PetscInt_FMT "  cutbacks %2" PetscInt_FMT "  %.2f s\n", lp->accepted, (double)r.depth,
+                              (double)(r.contact.load * 1e-3), r.contact.contact, r.contact.slip, r.outer, r.newton,
+                                r.linear, r.plastic, lp->cutbacks, r.seconds));
       else
-        PetscCall(PetscPrintf(app->comm, "step %3" PetscInt_FMT "  load %.6f  newton %2" PetscInt_FMT "  linear %4" PetscInt_FMT "  plastic points %7" PetscInt_FMT "  cutbacks %2" PetscInt_FMT "  time %.3f s\n", lp->accepted, (double)r.lambda, r.newton, r.linear, r.plastic, lp->cutbacks, r.seconds));
+        PetscCall(PetscPrintf(app->comm,
+          "step %3" PetscInt_FMT "  load %.6f  newton %2" PetscInt_FMT "  linear %4" PetscInt_FMT
+            "  plastic points %7" PetscInt_FMT "  cutbacks %2" PetscInt_FMT
+            "  time %.3f s\n", lp->accepted, (double)r.lambda, r.newton, r.linear, r.plastic, lp->cutbacks, r.seconds));
     }
     PetscCall(IndRunCheckStep(app, &r, &app->warnings, PETSC_TRUE));
     PetscCall(IndOutputSetStepInfo(app->output, lp->accepted, r.t, r.lambda, r.depth, r.contact.load * 1e-3));
     PetscCall(IndOutputWriteStep(app->output, app->contact ? r.depth : r.lambda, app->U, app->assembly));
     if (app->contact) {
-      IndCurvePoint p = {lp->accepted, r.t, r.depth, r.contact.load * 1e-3, r.contact.contact, r.contact.stick, r.contact.slip, r.newton, r.outer, r.linear, lp->cutbacks, r.contact.penetration, r.contact.area, r.contact.pileup, r.contact.deepest, r.seconds};
+      IndCurvePoint p = {lp->accepted, r.t, r.depth, r.contact.load * 1e-3, r.contact.contact, r.contact.stick,
+        r.contact.slip, r.newton, r.outer, r.linear, lp->cutbacks, r.contact.penetration, r.contact.area,
+        r.contact.pileup, r.contact.deepest, r.seconds};
       PetscCall(IndOutputCurvePoint(app->output, &p));
       PetscCall(IndSummaryAddPoint(app->summary, &p));
     }

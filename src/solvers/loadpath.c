@@ -52,9 +52,11 @@ PetscErrorCode IndLoadPathSetFromOptions(MPI_Comm comm, PetscBool unload_default
     &lp->max_cutbacks, NULL));
   PetscOptionsEnd();
   PetscCheck(steps >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-load_steps must be >= 1, got %" PetscInt_FMT, steps);
-  PetscCheck(unload_steps >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-load_unload_steps must be >= 1, got %" PetscInt_FMT, unload_steps);
+  PetscCheck(unload_steps >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-load_unload_steps must be >= 1, got %" PetscInt_FMT,
+    unload_steps);
   PetscCheck(lp->hold >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-load_hold must be >= 0, got %g", (double)lp->hold);
-  PetscCheck(lp->depth_max >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-load_depth must be >= 0 (nm), got %g", (double)lp->depth_max);
+  PetscCheck(lp->depth_max >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-load_depth must be >= 0 (nm), got %g",
+    (double)lp->depth_max);
   PetscCheck(lp->force_max >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-load_force must be >= 0 (uN), got %g",
     (double)lp->force_max);
   PetscCheck(lp->force_rtol > 0 && lp->force_rtol < 1, comm, PETSC_ERR_ARG_OUTOFRANGE,
@@ -68,13 +70,20 @@ PetscErrorCode IndLoadPathSetFromOptions(MPI_Comm comm, PetscBool unload_default
   PetscCheck(lp->force_max == 0 || lp->depth_max > 0, comm, PETSC_ERR_ARG_WRONG,
              "-load_force needs -load_depth > 0 (nm): the largest depth the indenter may reach to carry it");
   lp->t_end = 1.0 + lp->hold + (lp->unload ? 1.0 : 0.0);
-  PetscCheck(lp->dt_max > 0 && lp->dt_max <= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-load_max_increment must lie in (0, 1], got %g", (double)lp->dt_max);
-  PetscCheck(lp->dt_min > 0 && lp->dt_min <= PetscMin(lp->dt_initial, lp->dt_unload), comm, PETSC_ERR_ARG_OUTOFRANGE, "-load_min_increment must lie in (0, 1/-load_steps = %g] and (0, 1/-load_unload_steps = %g], got %g", (double)lp->dt_initial, (double)lp->dt_unload, (double)lp->dt_min);
-  PetscCheck(lp->cutback > 0 && lp->cutback < 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-load_cutback must lie in (0, 1), got %g", (double)lp->cutback);
-  PetscCheck(lp->unload_growth >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-load_unload_growth must be >= 1, got %g", (double)lp->unload_growth);
+  PetscCheck(lp->dt_max > 0 && lp->dt_max <= 1, comm, PETSC_ERR_ARG_OUTOFRANGE,
+    "-load_max_increment must lie in (0, 1], got %g", (double)lp->dt_max);
+  PetscCheck(lp->dt_min > 0 && lp->dt_min <= PetscMin(lp->dt_initial, lp->dt_unload), comm, PETSC_ERR_ARG_OUTOFRANGE,
+    "-load_min_increment must lie in (0, 1/-load_steps = %g] and (0, 1/-load_unload_steps = %g], got %g",
+    (double)lp->dt_initial, (double)lp->dt_unload, (double)lp->dt_min);
+  PetscCheck(lp->cutback > 0 && lp->cutback < 1, comm, PETSC_ERR_ARG_OUTOFRANGE,
+    "-load_cutback must lie in (0, 1), got %g", (double)lp->cutback);
+  PetscCheck(lp->unload_growth >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-load_unload_growth must be >= 1, got %g",
+    (double)lp->unload_growth);
   PetscCheck(lp->growth >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-load_growth must be >= 1, got %g", (double)lp->growth);
-  PetscCheck(lp->easy_its >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-load_easy_its must be >= 0, got %" PetscInt_FMT, lp->easy_its);
-  PetscCheck(lp->max_cutbacks >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-load_max_cutbacks must be >= 0, got %" PetscInt_FMT, lp->max_cutbacks);
+  PetscCheck(lp->easy_its >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-load_easy_its must be >= 0, got %" PetscInt_FMT,
+    lp->easy_its);
+  PetscCheck(lp->max_cutbacks >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE,
+    "-load_max_cutbacks must be >= 0, got %" PetscInt_FMT, lp->max_cutbacks);
   lp->dt = PetscMin(lp->dt_initial, lp->dt_max);
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -15,7 +15,8 @@ PetscErrorCode IndScratchSetFromOptions(MPI_Comm comm, PetscBool indenter, IndSc
   s->dir[0] = 1.0;
   s->steps  = 20;
   PetscOptionsBegin(comm, NULL, IND_TITLE "Scratch (-scratch_*)", "Scratch");
-  PetscCall(IndOptionsReal("-scratch_length", "Scratch test: after loading (and the hold), the indenter slides this far "
+  PetscCall(IndOptionsReal("-scratch_length",
+    "Scratch test: after loading (and the hold), the indenter slides this far "
     "at its depth (or load, under -load_force), then unloads", "nm", "0: no scratch", s->length, &s->length,
     &has_length));
   PetscCall(IndOptionsRealArray("-scratch_direction", "Direction of the slide in the surface's plane", "x,y", "1,0",
@@ -25,17 +26,20 @@ PetscErrorCode IndScratchSetFromOptions(MPI_Comm comm, PetscBool indenter, IndSc
   PetscOptionsEnd();
   PetscCheck(s->length >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-scratch_length must be >= 0 (nm), got %.6g",
              (double)s->length);
-  PetscCheck(s->length == 0 || indenter, comm, PETSC_ERR_ARG_WRONG, "-scratch_length needs an indenter: -indenter_type");
+  PetscCheck(s->length == 0 || indenter, comm, PETSC_ERR_ARG_WRONG,
+    "-scratch_length needs an indenter: -indenter_type");
   PetscCheck(s->length > 0 || !(has_dir || has_steps), comm, PETSC_ERR_ARG_WRONG,
              "-scratch_%s needs a scratch: -scratch_length > 0 (nm)", has_dir ? "direction" : "steps");
-  PetscCheck(!has_dir || ndir == 2, comm, PETSC_ERR_ARG_SIZ, "-scratch_direction needs two values x,y, got %" PetscInt_FMT,
+  PetscCheck(!has_dir || ndir == 2, comm, PETSC_ERR_ARG_SIZ,
+    "-scratch_direction needs two values x,y, got %" PetscInt_FMT,
              ndir);
   norm = PetscSqrtReal(s->dir[0] * s->dir[0] + s->dir[1] * s->dir[1]);
   PetscCheck(norm > 0 && !PetscIsInfOrNanReal(norm), comm, PETSC_ERR_ARG_OUTOFRANGE,
              "-scratch_direction %.6g,%.6g has no direction", (double)s->dir[0], (double)s->dir[1]);
   s->dir[0] /= norm;
   s->dir[1] /= norm;
-  PetscCheck(s->steps >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-scratch_steps must be >= 1, got %" PetscInt_FMT, s->steps);
+  PetscCheck(s->steps >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-scratch_steps must be >= 1, got %" PetscInt_FMT,
+    s->steps);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -52,7 +56,8 @@ PetscErrorCode IndScratchSetUp(IndScratch *s, IndContact c, IndBC bc)
     const int n = IndContactPlaneThroughAxis(&bc->spec[k], ind);
     /* The mirror image of the indenter slides with it only along the plane. */
     PetscCheck(!n || PetscAbsReal(s->dir[n - 1]) <= 1e-12, c->comm, PETSC_ERR_ARG_INCOMP,
-               "-scratch_direction %.6g,%.6g leaves the symmetry plane '%s' (%c = %.6g nm) through the indenter's axis: slide "
+               "-scratch_direction %.6g,%.6g leaves the symmetry plane '%s' (%c = %.6g nm) through the indenter's "
+                 "axis: slide "
                "along it (%s) or use a full model",
                (double)s->dir[0], (double)s->dir[1], bc->spec[k].label, n == 1 ? 'x' : 'y', (double)bc->spec[k].plane,
                n == 1 ? "0,1 or 0,-1" : "1,0 or -1,0");
@@ -60,7 +65,8 @@ PetscErrorCode IndScratchSetUp(IndScratch *s, IndContact c, IndBC bc)
   IndScratchAxis(s, 1.0, end);
   PetscCheck(end[0] >= c->extent[0] && end[0] <= c->extent[1] && end[1] >= c->extent[2] && end[1] <= c->extent[3],
              c->comm, PETSC_ERR_USER_INPUT,
-             "-scratch_length %.6g nm takes the indenter's axis from (%.6g, %.6g) to (%.6g, %.6g) nm, off the contact surface "
+             "-scratch_length %.6g nm takes the indenter's axis from (%.6g, %.6g) to (%.6g, %.6g) nm, off the contact "
+               "surface "
              "'%s' (x from %.6g to %.6g, y from %.6g to %.6g nm)",
              (double)s->length, (double)s->origin[0], (double)s->origin[1], (double)end[0], (double)end[1], c->surface,
              (double)c->extent[0], (double)c->extent[1], (double)c->extent[2], (double)c->extent[3]);

@@ -71,7 +71,8 @@ static PetscErrorCode FormJacobian(SNES snes, Vec U, Mat A, Mat P, void *ctx)
 /* Semi-smooth Newton can cycle for ever between contact states (stick, slip, open) of a few nodes,
    with the same residuals coming back every 2 to 5 iterations. Stopping after -newton_stall_its
    iterations without a new smallest residual lets the load step be cut long before -snes_max_it. */
-static PetscErrorCode ConvergedUnlessStalled(SNES snes, PetscInt it, PetscReal xnorm, PetscReal snorm, PetscReal fnorm, SNESConvergedReason *reason, void *ctx)
+static PetscErrorCode ConvergedUnlessStalled(SNES snes, PetscInt it, PetscReal xnorm, PetscReal snorm,
+  PetscReal fnorm, SNESConvergedReason *reason, void *ctx)
 {
   IndSolver s = (IndSolver)ctx;
 
@@ -92,7 +93,8 @@ static PetscErrorCode ConvergedUnlessStalled(SNES snes, PetscInt it, PetscReal x
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode IndSolverCreate(DM dm, IndAssembly assembly, IndBC bc, IndContact contact, PetscReal depth_max, IndSolver *out)
+PetscErrorCode IndSolverCreate(DM dm, IndAssembly assembly, IndBC bc, IndContact contact, PetscReal depth_max,
+  IndSolver *out)
 {
   IndSolver    s;
   KSP          ksp;
@@ -169,10 +171,12 @@ PetscErrorCode IndSolverCreate(DM dm, IndAssembly assembly, IndBC bc, IndContact
   }
   s->stall_its = 10;
   PetscOptionsBegin(PetscObjectComm((PetscObject)dm), NULL, IND_TITLE "Newton", "Solver");
-  PetscCall(IndOptionsInt("-newton_stall_its", "Newton fails after this many iterations without a 1% smaller residual (0: never)",
+  PetscCall(IndOptionsInt("-newton_stall_its",
+    "Newton fails after this many iterations without a 1% smaller residual (0: never)",
                           NULL, s->stall_its, &s->stall_its, NULL));
   PetscOptionsEnd();
-  PetscCheck(s->stall_its >= 0, PetscObjectComm((PetscObject)dm), PETSC_ERR_ARG_OUTOFRANGE, "-newton_stall_its must be >= 0, got %" PetscInt_FMT, s->stall_its);
+  PetscCheck(s->stall_its >= 0, PetscObjectComm((PetscObject)dm), PETSC_ERR_ARG_OUTOFRANGE,
+    "-newton_stall_its must be >= 0, got %" PetscInt_FMT, s->stall_its);
   PetscCall(SNESSetConvergenceTest(s->snes, ConvergedUnlessStalled, s, NULL));
   PetscCall(SNESSetFromOptions(s->snes));
   if (contact) {
@@ -222,9 +226,13 @@ PetscErrorCode IndSolverSolve(IndSolver s, PetscReal load_factor, Vec U, IndSolv
     r->linear += lits;
     r->outer = k;
     if (r->reason <= 0) {
-      if (r->reason == SNES_DIVERGED_FUNCTION_DOMAIN) PetscCall(PetscSNPrintf(r->why, sizeof(r->why), "return map failed at %" PetscInt_FMT " quadrature points", s->nfailed));
-      else if (s->stalled) PetscCall(PetscSNPrintf(r->why, sizeof(r->why), "Newton stalled: no smaller residual in %" PetscInt_FMT " iterations (-newton_stall_its)%s", s->stall_its, c ? " with contact" : ""));
-      else PetscCall(PetscSNPrintf(r->why, sizeof(r->why), "Newton: %s after %" PetscInt_FMT " iterations%s", SNESConvergedReasons[r->reason], its, c ? " with contact" : ""));
+      if (r->reason == SNES_DIVERGED_FUNCTION_DOMAIN) PetscCall(PetscSNPrintf(r->why, sizeof(r->why),
+        "return map failed at %" PetscInt_FMT " quadrature points", s->nfailed));
+      else if (s->stalled) PetscCall(PetscSNPrintf(r->why, sizeof(r->why),
+        "Newton stalled: no smaller residual in %" PetscInt_FMT " iterations (-newton_stall_its)%s", s->stall_its,
+        c ? " with contact" : ""));
+      else PetscCall(PetscSNPrintf(r->why, sizeof(r->why), "Newton: %s after %" PetscInt_FMT " iterations%s",
+        SNESConvergedReasons[r->reason], its, c ? " with contact" : ""));
       break;
     }
     if (!c) {
@@ -234,24 +242,34 @@ PetscErrorCode IndSolverSolve(IndSolver s, PetscReal load_factor, Vec U, IndSolv
     PetscCall(RefreshMultipliers(s, U));
     PetscCall(IndContactUpdate(c, U, &r->contact));
     if (c->monitor)
-      PetscCall(PetscPrintf(c->comm, "    outer %2" PetscInt_FMT ": newton %2" PetscInt_FMT "  contact %5" PetscInt_FMT " (stick %5" PetscInt_FMT ", slip %5" PetscInt_FMT ")  load %.6e uN  penetration %.3e nm  reaction change %.3e  rho scale %g\n", k, its, r->contact.contact, r->contact.stick, r->contact.slip,
-                            (double)(r->contact.load * 1e-3), (double)r->contact.penetration, (double)r->contact.change, (double)c->rho_scale));
+      PetscCall(PetscPrintf(c->comm,
+        "    outer %2" PetscInt_FMT ": newton %2" PetscInt_FMT "  contact %5" PetscInt_FMT " (stick %5" PetscInt_FMT
+          ", slip %5" PetscInt_FMT
+          ")  load %.6e uN  penetration %.3e nm  reaction change %.3e  rho scale %g\n", k, its, r->contact.contact,
+          r->contact.stick, r->contact.slip,
+                            (double)(r->contact.load * 1e-3), (double)r->contact.penetration,
+                              (double)r->contact.change, (double)c->rho_scale));
     /* The Newton variant's change is its complementarity residual, part of the residual Newton has
        just driven below its tolerance; relative to a vanishing reaction (the last node leaving the
        contact) it could never be small, so Newton's absolute tolerance also accepts it. */
-    if ((r->contact.change <= c->rtol || (c->variant == IND_UZAWA_NEWTON && r->contact.mismatch <= step_atol)) && r->contact.penetration <= c->pen_atol) {
+    if ((r->contact.change <= c->rtol || (c->variant == IND_UZAWA_NEWTON && r->contact.mismatch <= step_atol))
+      && r->contact.penetration <= c->pen_atol) {
       r->converged = PETSC_TRUE;
       break;
     }
     if (c->variant == IND_UZAWA_NEWTON && its == 0) {
       /* Newton met its tolerances without a step: another outer iteration would change nothing. */
-      PetscCall(PetscSNPrintf(r->why, sizeof(r->why), "contact: reaction change %.2e (-contact_uzawa_rtol %.1e), penetration %.2e nm (limit %.2e) at Newton's tolerances: tighten -snes_rtol or -snes_atol", (double)r->contact.change, (double)c->rtol, (double)r->contact.penetration, (double)c->pen_atol));
+      PetscCall(PetscSNPrintf(r->why, sizeof(r->why),
+        "contact: reaction change %.2e (-contact_uzawa_rtol %.1e), penetration %.2e nm (limit %.2e) at Newton's "
+        "tolerances: tighten -snes_rtol or -snes_atol", (double)r->contact.change, (double)c->rtol,
+        (double)r->contact.penetration, (double)c->pen_atol));
       break;
     }
     /* A growing change means rho is past the fixed point's stability limit: halve it, for good. */
     if (c->variant == IND_UZAWA_FIXED_POINT && r->contact.change > last_change) {
       c->rho_scale *= 0.5;
-      if (c->monitor) PetscCall(PetscPrintf(c->comm, "    outer: reaction change grew, rho halved (scale now %g)\n", (double)c->rho_scale));
+      if (c->monitor) PetscCall(PetscPrintf(c->comm, "    outer: reaction change grew, rho halved (scale now %g)\n",
+        (double)c->rho_scale));
     }
     last_change = r->contact.change;
   }
@@ -259,7 +277,10 @@ PetscErrorCode IndSolverSolve(IndSolver s, PetscReal load_factor, Vec U, IndSolv
     PetscCall(SNESSetTolerances(s->snes, atol, rtol, stol, maxit, maxf));
     PetscCall(DMRestoreGlobalVector(s->dm, &F));
     if (!r->converged && r->reason > 0 && !r->why[0])
-      PetscCall(PetscSNPrintf(r->why, sizeof(r->why), "contact loop: %" PetscInt_FMT " outer iterations, reaction change %.2e (-contact_uzawa_rtol %.1e), penetration %.2e nm (limit %.2e)", c->max_outer, (double)r->contact.change, (double)c->rtol, (double)r->contact.penetration, (double)c->pen_atol));
+      PetscCall(PetscSNPrintf(r->why, sizeof(r->why),
+        "contact loop: %" PetscInt_FMT " outer iterations, reaction change %.2e (-contact_uzawa_rtol %.1e), "
+        "penetration %.2e nm (limit %.2e)", c->max_outer, (double)r->contact.change, (double)c->rtol,
+        (double)r->contact.penetration, (double)c->pen_atol));
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
