@@ -24,7 +24,6 @@ The run's pseudo-time t becomes seconds through --segment-seconds (a unit of t: 
 Exit status 2 on bad input.
 """
 import argparse
-import csv
 import datetime
 import json
 import os
@@ -33,7 +32,7 @@ import sys
 
 import numpy as np
 
-from runfiles import InputError, mirror, open_fields, top_surface  # this script's folder
+from runfiles import InputError, mirror, open_fields, read_curve, top_surface  # this script's folder
 
 CSV_NAME, SUMMARY_NAME, H5_NAME = "load_displacement.csv", "summary.json", "indent.h5"
 # Steps end exactly on the load program's segment ends (src/solvers/loadpath.c); the CSV prints t with 10
@@ -42,21 +41,6 @@ T_TOL = 1e-8
 
 
 # ----------------------------------------------------------------------------------------- inputs
-def read_curve(path):
-    if not os.path.isfile(path):
-        raise InputError(f"{path}: no such file (a run with an indenter writes it)")
-    with open(path, newline="") as f:
-        rows = list(csv.DictReader(f))
-    need = ("t", "depth_nm", "load_uN")
-    if not rows or any(c not in rows[0] for c in need):
-        raise InputError(f"{path}: no data rows or missing one of the columns {', '.join(need)}")
-    try:
-        cols = need + (("contact_area_nm2",) if "contact_area_nm2" in rows[0] else ())
-        return {c: np.array([float(r[c]) for r in rows]) for c in cols}
-    except (TypeError, ValueError) as e:
-        raise InputError(f"{path}: unreadable number ({e})") from None
-
-
 def run_options(run_dir, h5):
     """The options string of the run: summary.json's, or indent.h5's for a run without a summary
     (stopped before the end)."""
@@ -207,7 +191,7 @@ def main(argv=None):
             raise InputError("--segment-seconds and --gsf-half-width must be > 0 and --gsf-pixels >= 2")
         if not os.path.isdir(args.run_dir):
             raise InputError(f"{args.run_dir}: no such run directory")
-        curve = read_curve(os.path.join(args.run_dir, CSV_NAME))
+        curve = read_curve(os.path.join(args.run_dir, CSV_NAME), ("t", "depth_nm", "load_uN"))
         h5, h5_path = open_fields(args.run_dir, H5_NAME, "the imprint needs -output_fields 1")
         with h5:
             options, start_time = run_options(args.run_dir, h5)

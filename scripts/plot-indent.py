@@ -15,7 +15,6 @@ summary.json. Half (y >= 0) and quarter (x, y >= 0) models are mirrored for the 
 on bad input.
 """
 import argparse
-import csv
 import json
 import os
 import sys
@@ -28,7 +27,7 @@ matplotlib.use("Agg")  # files only, never a window: the script also runs on mac
 import matplotlib.pyplot as plt  # noqa: E402  (must come after the backend is chosen)
 from matplotlib import colors, ticker, tri as mtri  # noqa: E402
 
-from runfiles import CELL_FACES, InputError, mirror, plane_faces, read_scratch  # noqa: E402  (this script's folder)
+from runfiles import CELL_FACES, InputError, mirror, plane_faces, read_curve, read_scratch  # noqa: E402  (this script's folder)
 
 CSV_NAME = "load_displacement.csv"
 H5_NAME = "indent.h5"
@@ -40,21 +39,6 @@ REL_TOL = 1e-9
 
 
 # ----------------------------------------------------------------------------------------- input
-def read_curve(path):
-    """The load-displacement CSV as a dict of float arrays, one entry per column."""
-    if not os.path.isfile(path):
-        raise InputError(f"{path}: no such file")
-    with open(path, newline="") as f:
-        rows = list(csv.DictReader(f))
-    need = ("depth_nm", "load_uN")
-    if not rows or any(c not in rows[0] for c in need):
-        raise InputError(f"{path}: no data rows or missing one of the columns {', '.join(need)}")
-    try:
-        return {c: np.array([float(r[c]) for r in rows]) for c in rows[0]}
-    except (TypeError, ValueError) as e:
-        raise InputError(f"{path}: unreadable number ({e})") from None
-
-
 class Run:
     """The mesh of indent.h5, with its fields read one step at a time (a step of ~100k cells is
     a few MB, the whole history can be GBs)."""

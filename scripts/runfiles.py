@@ -118,3 +118,18 @@ def open_fields(run_dir, h5_name, what):
         return h5py.File(path, "r"), path
     except OSError as e:
         raise InputError(f"{path}: cannot open as HDF5 ({e})") from None
+
+
+def read_curve(path, need=("depth_nm", "load_uN")):
+    """The load-displacement CSV as a dict of float arrays, one per column; InputError naming the file
+    when it is missing, has no rows or lacks a column of need."""
+    if not os.path.isfile(path):
+        raise InputError(f"{path}: no such file (a run with an indenter writes it)")
+    with open(path, newline="") as f:
+        rows = list(csv.DictReader(f))
+    if not rows or any(c not in rows[0] for c in need):
+        raise InputError(f"{path}: no data rows or missing one of the columns {', '.join(need)}")
+    try:
+        return {c: np.array([float(r[c]) for r in rows]) for c in rows[0]}
+    except (TypeError, ValueError) as e:
+        raise InputError(f"{path}: unreadable number ({e})") from None

@@ -145,6 +145,12 @@ PetscErrorCode IndAppSetStepMonitor(IndApp app, IndStepMonitor fn, void *ctx)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The distance slid at pseudo-time t of the load program (0 without a scratch), nm. */
+static PetscReal SlideAt(IndApp app, PetscReal t)
+{
+  return app->scratch.length * IndLoadPathScratchFraction(&app->path, t);
+}
+
 /* The converged trial state becomes the accepted one. */
 static PetscErrorCode AcceptStep(IndApp app, PetscReal lambda_old, const IndStepResult *r)
 {
@@ -152,7 +158,7 @@ static PetscErrorCode AcceptStep(IndApp app, PetscReal lambda_old, const IndStep
   PetscCall(IndHistoryCommit(app->history));
   if (app->contact) {
     app->ddepth_last = r->depth - app->contact->depth_c;
-    app->dslide_last = r->slide - app->scratch.length * IndLoadPathScratchFraction(&app->path, app->path.t);
+    app->dslide_last = r->slide - SlideAt(app, app->path.t);
     PetscCall(IndContactCommit(app->contact, app->U));
   }
   PetscCall(VecWAXPY(app->dU, -1.0, app->Uprev, app->U));
@@ -176,7 +182,7 @@ static PetscErrorCode SolveLoadStep(IndApp app, PetscReal t, IndStepResult *r)
   PetscFunctionBeginUser;
   /* A slide changes the load at the accepted depth: the search starts by evaluating it there. */
   IndForceSearchStart(&fs, target, lp->force_rtol * lp->force_max, lp->depth_max, app->contact->depth_c,
-    IndLoadPathScratchFraction(lp, t) > IndLoadPathScratchFraction(lp, lp->t) ? -1.0 : app->load_last);
+    SlideAt(app, t) > SlideAt(app, lp->t) ? -1.0 : app->load_last);
   app->defer_commit = PETSC_TRUE;
   for (PetscInt k = 0; k < max_depths && !found; ++k) {
     app->depth_trial = IndForceSearchNext(&fs, app->slope_last, lp->depth_max * lambda);
@@ -225,7 +231,7 @@ PetscErrorCode IndAppSolveStep(IndApp app, PetscReal t, IndStepResult *r)
   r->t      = t;
   r->lambda = IndLoadPathFactor(&app->path, t);
   r->depth  = app->depth_trial >= 0 ? app->depth_trial : app->path.depth_max * r->lambda;
-  r->slide  = app->scratch.length * IndLoadPathScratchFraction(&app->path, t);
+  r->slide  = SlideAt(app, t);
   PetscCall(PetscTime(&t0));
   PetscCall(PetscLogStagePush(IndLog.solve));
   PetscCall(VecCopy(app->U, app->Uprev));
@@ -242,10 +248,9 @@ PetscErrorCode IndAppSolveStep(IndApp app, PetscReal t, IndStepResult *r)
      reversed (that guess made Newton diverge 9 times in a row on a Vickers indentation). */
   /* Under load control the depth drives the step: the increment is scaled by the change of depth. A
      slide drives it in a scratch: the last slide's increment, scaled (at its start, the accepted state). */
-  if (r->slide > app->scratch.length * IndLoadPathScratchFraction(&app->path, app->path.t)) {
-    const PetscReal ds = r->slide - app->scratch.length * IndLoadPathScratchFraction(&app->path, app->path.t);
+  if (r->slide > SlideAt(app, app->path.t)) {
     if (app->predictor == IND_PREDICTOR_EXTRAPOLATE && app->dslide_last > 0)
-      PetscCall(VecAXPY(app->U, ds / app->dslide_last, app->dU));
+      PetscCall(VecAXPY(app->U, (r->slide - SlideAt(app, app->path.t)) / app->dslide_last, app->dU));
   } else if (app->depth_trial >= 0) {
     const PetscReal ratio = app->ddepth_last != 0 ? (r->depth - app->contact->depth_c) / app->ddepth_last : 0;
     if (app->predictor == IND_PREDICTOR_EXTRAPOLATE && ratio > 0) PetscCall(VecAXPY(app->U, ratio, app->dU));
