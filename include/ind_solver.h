@@ -47,3 +47,7 @@ PetscErrorCode IndSolverPredict(IndSolver solver, PetscReal t_old, PetscReal t_n
 PetscErrorCode IndSolverEvaluate(IndSolver solver, Vec U);
 /* Solves for U at the given load factor (and the indenter's current depth); U holds the initial guess. */
 PetscErrorCode IndSolverSolve(IndSolver solver, PetscReal load_factor, Vec U, IndSolveResult *result);
+/* Makes the finest smoother of a multigrid preconditioner (PCMG, PCGAMG; nothing for other types or
+   before the first setup) set itself up again on its operator at its next use: after the operator
+   changed in place while the preconditioner is reused, as on lagged Newton iterations. */
+PetscErrorCode IndSolverRefreshFineSmoother(KSP ksp);
