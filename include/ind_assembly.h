@@ -1,7 +1,7 @@
 #pragma once
 /* The project's own cell loop: residual B^T sigma and Jacobian B^T D B over cached quadrature data.
    This is where the constitutive update of each quadrature point is called: from the committed
-   history and the current strain, writing the trial history during residual evaluations. */
+   history and the current strain; the history changes only when a step is accepted. */
 #include <petscmat.h>
 #include "ind_disc.h"
 #include "ind_material.h"
@@ -28,9 +28,10 @@ struct _p_IndAssembly {
   IndFormulation formulation; /* -formulation */
   IndVectorFn    body_force;
   void          *body_ctx;
+  PetscReal     *xq; /* with a body force: the quadrature points, ncell x nq x 3 */
   PetscInt       nfailed;  /* local quadrature points whose return map failed, last residual */
   PetscInt       nplastic; /* local quadrature points yielding (dp > 0), last residual */
-  PetscReal     *ue, *fe, *Ke, *G, *DB, *B; /* per-cell work arrays, allocated once */
+  PetscReal     *ue, *xe, *fe, *Ke, *G, *DB, *B; /* per-cell work arrays, allocated once */
   Mat            J;      /* the matrix made by IndAssemblyCreateMatrix (borrowed) */
   IndMatInsert   insert; /* and its cached insertion (NULL: MatSetValues) */
 };
@@ -48,11 +49,17 @@ typedef struct {
 
 PetscErrorCode IndAssemblyCreate(IndDisc disc, IndMaterials mats, IndHistory history, IndAssembly *assembly);
 PetscErrorCode IndAssemblyDestroy(IndAssembly *assembly);
+/* A body force (nN/nm^3) at every quadrature point, for manufactured solutions; NULL removes it. */
+PetscErrorCode IndAssemblySetBodyForce(IndAssembly assembly, IndVectorFn fn, void *ctx);
 /* Creates the AIJ matrix (block size 3) preallocated by a dry run of the cell loop. */
 PetscErrorCode IndAssemblyCreateMatrix(IndAssembly assembly, Mat *J);
-/* Floc = internal minus external forces, over local cells (Floc is zeroed first); writes the trial
-   history and sets nfailed and nplastic. */
+/* Floc = internal minus external forces, over local cells (Floc is zeroed first), from the committed
+   history and the displacement Uloc (the constitutive update of every point, not stored); sets
+   nfailed and nplastic. */
 PetscErrorCode IndAssemblyResidual(IndAssembly assembly, Vec Uloc, Vec Floc);
+/* Accepts the displacement Uloc: the constitutive update of every point, as the residual computes it
+   there, becomes its committed history. Sets nplastic. */
+PetscErrorCode IndAssemblyCommit(IndAssembly assembly, Vec Uloc);
 PetscErrorCode IndAssemblyJacobian(IndAssembly assembly, Vec Uloc, Mat J);
 PetscErrorCode IndAssemblyCellAverages(IndAssembly assembly, Vec Uloc, IndCellFields *fields);
 /* Local cells whose deformation gradient F = I + grad u has det F <= 0 at a quadrature point (inverted

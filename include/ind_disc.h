@@ -3,6 +3,7 @@
    once so the assembly loops never query the mesh: closure indices and inverse Jacobians. */
 #include <petscdmplex.h>
 #include "ind_mesh.h"
+#include "ind_mat3.h"
 
 typedef struct _p_IndDisc *IndDisc;
 struct _p_IndDisc {
@@ -20,21 +21,51 @@ struct _p_IndDisc {
   PetscInt         cStart;
   PetscInt        *lidx;  /* ncell x ndof local-vector indices, closure order */
   PetscInt        *gidx;  /* ncell x ndof global indices (the same dofs) */
-  PetscReal       *wdetJ; /* ncell x nq: weight times Jacobian determinant */
-  PetscReal       *invJ;  /* ncell x nq x 9: invJ[k*3+j] = d xi_k / d x_j */
-  PetscReal       *xq;    /* ncell x nq x 3: physical quadrature points */
+  PetscReal       *wdetJ; /* ncell x nq: weight times det J, and */
+  PetscReal       *invJ;  /* ncell x nq x 9: invJ[k*3+j] = d xi_k / d x_j, kept only for cells whose coordinate map
+                             the displacement basis cannot hold (second-order cells under P1/Q1); NULL otherwise */
+  Vec              Xloc;  /* position of every displacement node, local vector of the displacement's layout */
 };
 
 PetscErrorCode IndDiscCreate(IndMesh mesh, IndDisc *disc);
 PetscErrorCode IndDiscDestroy(IndDisc *disc);
+/* Positions of the quadrature points, ncell x nq x 3 (PetscFree them): for body forces. */
+PetscErrorCode IndDiscQuadraturePoints(IndDisc disc, PetscReal **xq);
 /* Global vector of the position of every displacement node (for the rigid-body modes). */
 PetscErrorCode IndDiscNodeCoordinates(IndDisc disc, Vec *coords);
 
-/* Physical shape-function gradients G (nb x 3) of local cell i at quadrature point q. */
-static inline void IndDiscGradients(IndDisc disc, PetscInt i, PetscInt q, PetscReal *G)
+/* The positions (nb x 3) of the nodes of local cell i, from xn, the array of Xloc. */
+static inline void IndDiscCellNodes(IndDisc disc, PetscInt i, const PetscScalar *xn, PetscReal *xc)
 {
-  const PetscReal *dN = disc->dN + q * disc->nb * 3, *iJ = disc->invJ + (i * disc->nq + q) * 9;
-  for (PetscInt a = 0; a < disc->nb; ++a)
+  const PetscInt *idx = disc->lidx + i * disc->ndof;
+  for (PetscInt k = 0; k < disc->ndof; ++k) xc[k] = PetscRealPart(xn[idx[k]]);
+}
+
+/* Physical shape-function gradients G (nb x 3) at quadrature point q of local cell i, whose node
+   positions are xc (IndDiscCellNodes); returns the quadrature weight times det J. The Jacobian of the
+   coordinate map is recomputed here rather than stored: 80 bytes a quadrature point, 640 a hexahedron,
+   against some 80 flops a point. */
+static inline PetscReal IndDiscGradients(IndDisc disc, PetscInt i, const PetscReal *xc, PetscInt q, PetscReal *G)
+{
+  const PetscInt   nb = disc->nb;
+  const PetscReal *dN = disc->dN + q * nb * 3, *iJ;
+  PetscReal        Ji[9], w;
+
+  if (disc->invJ) {
+    iJ = disc->invJ + (i * disc->nq + q) * 9;
+    w  = disc->wdetJ[i * disc->nq + q];
+  } else {
+    PetscReal J[9] = {0}, det;
+    for (PetscInt a = 0; a < nb; ++a)
+      for (int d = 0; d < 3; ++d)
+        for (int k = 0; k < 3; ++k) J[3 * d + k] += xc[3 * a + d] * dN[3 * a + k];
+    det = IndDet3(J);
+    IndInverse3(J, det, Ji);
+    iJ = Ji;
+    w  = disc->w[q] * det;
+  }
+  for (PetscInt a = 0; a < nb; ++a)
     for (PetscInt j = 0; j < 3; ++j) G[a * 3 + j] = dN[a * 3 + 0] * iJ[0 * 3 + j] + dN[a * 3 + 1] * iJ[1 * 3 + j]
       + dN[a * 3 + 2] * iJ[2 * 3 + j];
+  return w;
 }

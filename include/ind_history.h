@@ -1,10 +1,10 @@
 #pragma once
 /* The history of every quadrature point (plastic strain, back stress, accumulated plastic strain and
-   the increment of the last step), as two distributed vectors laid out by a PetscSection on the cells:
-   - committed: the state at the end of the last accepted load step;
-   - trial: recomputed from committed and the current displacement at every residual evaluation.
-   A rejected step therefore needs no undo, and the whole state can be saved, restored and compared
-   as ordinary vectors on any number of ranks. */
+   the increment of the last step) at the end of the last accepted load step, as a distributed vector
+   laid out by a PetscSection on the cells. Every residual recomputes the points' update from it and
+   the current displacement without storing it; an accepted step writes the update over it
+   (IndAssemblyCommit). A rejected step therefore needs no undo, and the whole state can be saved,
+   restored and compared as an ordinary vector on any number of ranks. */
 #include <petscdm.h>
 #include "ind_disc.h"
 #include "ind_plasticity.h"
@@ -18,10 +18,8 @@ struct _p_IndHistory {
   DM       dm;     /* clone of the mesh carrying the cell section */
   PetscInt nq;     /* quadrature points per cell */
   PetscInt stride; /* values per cell: nq * IND_HISTORY_NVAL; local cell i starts at i * stride */
-  Vec      committed, trial;
+  Vec      committed;
 };
 
 PetscErrorCode IndHistoryCreate(IndDisc disc, IndHistory *history);
 PetscErrorCode IndHistoryDestroy(IndHistory *history);
-/* Accepts the trial state of the step just converged. */
-PetscErrorCode IndHistoryCommit(IndHistory history);

@@ -42,9 +42,13 @@ PetscErrorCode IndSolverDestroy(IndSolver *solver);
    prescribed-value increment and the response of the tangent at U to it, so that an elastic step
    converges in one Newton iteration instead of starting from a strained boundary layer of cells. */
 PetscErrorCode IndSolverPredict(IndSolver solver, PetscReal t_old, PetscReal t_new, Vec U);
-/* Evaluates the residual at U (load factor of the last solve): leaves the trial history consistent
-   with U, whatever iterate SNES evaluated last. */
+/* Evaluates the residual at U (load factor of the last solve): its counts of yielding and failed
+   points (nplastic, nfailed) and the contact's multipliers are U's, whatever iterate SNES evaluated
+   last. */
 PetscErrorCode IndSolverEvaluate(IndSolver solver, Vec U);
+/* Accepts U (load factor of the last solve): every quadrature point's update there becomes its
+   committed history (IndAssemblyCommit); nplastic counts the points that yielded. */
+PetscErrorCode IndSolverCommit(IndSolver solver, Vec U);
 /* Solves for U at the given load factor (and the indenter's current depth); U holds the initial guess. */
 PetscErrorCode IndSolverSolve(IndSolver solver, PetscReal load_factor, Vec U, IndSolveResult *result);
 /* Makes the finest smoother of a multigrid preconditioner (PCMG, PCGAMG; nothing for other types or

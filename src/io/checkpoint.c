@@ -15,7 +15,7 @@ static const char *const RunControl[] = {
   "ksp_",    "snes_",    "pc_",       "mg_",         "log",           "malloc",          "options_",      "help",
   "quiet",   "restart",  "output_",   "checkpoint_", "op_",           "info",            "on_error",      "viewer",
   "vec_view", "mat_",    "mesh_view", "dm_view",     "contact_monitor", "history",       "check_pointer", "fp_trap",
-  "memory_view", "objects_dump", "newton_stall_its", "load_max_cutbacks", "version"};
+  "memory_view", "objects_dump", "newton_stall_its", "load_max_cutbacks", "version", "matptap_", "matmatmult_"};
 
 static PetscBool IsRunControl(const char *name)
 {
@@ -437,7 +437,6 @@ PetscErrorCode IndCheckpointRead(IndApp app, const char path[])
   PetscCall(IndRowsJoin(v, "keys", "history", stride, "cells", what, app->disc->ncell, ckeys, (PetscReal *)hist));
   PetscCall(PetscViewerHDF5PopGroup(v));
   PetscCall(VecRestoreArray(app->history->committed, &hist));
-  PetscCall(VecCopy(app->history->committed, app->history->trial));
   PetscCall(PetscFree(ckeys));
   PetscCall(PetscViewerDestroy(&v));
 

@@ -1,4 +1,5 @@
 #include "ind_disc.h"
+#include "ind_common.h"
 
 static PetscErrorCode CacheReferenceTabulation(IndDisc disc)
 {
@@ -31,9 +32,11 @@ static PetscErrorCode CacheReferenceTabulation(IndDisc disc)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Values (nq x nn) of the scalar Lagrange basis of the coordinate field: degree 1, or 2 for
-   second-order gmsh meshes, chosen by the number nn of coordinate nodes per cell. */
-static PetscErrorCode CoordinateBasis(PetscBool simplex, PetscQuadrature quad, PetscInt nq, PetscInt nn, PetscReal **Nx)
+/* Values (nq x nn) and reference gradients (nq x nn x 3) of the scalar Lagrange basis of the
+   coordinate field at the points of quad: degree 1, or 2 for second-order gmsh meshes, chosen by the
+   number nn of coordinate nodes per cell. dNx may be NULL. */
+static PetscErrorCode CoordinateBasis(PetscBool simplex, PetscQuadrature quad, PetscInt nq, PetscInt nn, PetscReal **Nx,
+                                      PetscReal **dNx)
 {
   PetscFunctionBeginUser;
   for (PetscInt k = 1; k <= 2; ++k) {
@@ -44,9 +47,13 @@ static PetscErrorCode CoordinateBasis(PetscBool simplex, PetscQuadrature quad, P
     PetscCall(PetscFESetQuadrature(fe, quad));
     PetscCall(PetscFEGetDimension(fe, &nb));
     if (nb == nn) {
-      PetscCall(PetscFEGetCellTabulation(fe, 0, &T));
+      PetscCall(PetscFEGetCellTabulation(fe, 1, &T));
       PetscCall(PetscMalloc1(nq * nn, Nx));
       PetscCall(PetscArraycpy(*Nx, T->T[0], nq * nn));
+      if (dNx) {
+        PetscCall(PetscMalloc1(nq * nn * 3, dNx));
+        PetscCall(PetscArraycpy(*dNx, T->T[1], nq * nn * 3));
+      }
       PetscCall(PetscFEDestroy(&fe));
       PetscFunctionReturn(PETSC_SUCCESS);
     }
@@ -56,80 +63,198 @@ static PetscErrorCode CoordinateBasis(PetscBool simplex, PetscQuadrature quad, P
     "Cells with %" PetscInt_FMT " coordinate nodes are not supported (first- or second-order meshes only)", nn);
 }
 
-static PetscErrorCode CacheCells(IndDisc disc, PetscBool simplex, PetscQuadrature quad)
+/* Every per-cell closure is a search through the mesh's cell-type label in PETSc 3.18 (10 to 15 us
+   a hexahedron); the indices are taken once, and the node positions and the geometry follow from
+   them and the vertex coordinates without another closure. */
+static PetscErrorCode CacheIndices(IndDisc disc)
 {
   DM                     dm = disc->dm;
   PetscSection           s;
   ISLocalToGlobalMapping ltog;
-  DM                     cdm;
-  PetscSection           cs;
-  Vec                    X;
-  PetscReal             *v, *J, *detJ, *Nx = NULL;
-  PetscInt               nn = 0;
   PetscInt               cEnd;
 
   PetscFunctionBeginUser;
-  PetscCall(PetscLogEventBegin(IndLog.geometry, 0, 0, 0, 0));
   PetscCall(DMPlexGetHeightStratum(dm, 0, &disc->cStart, &cEnd));
   disc->ncell = cEnd - disc->cStart;
   PetscCall(DMGetLocalSection(dm, &s));
   PetscCall(DMGetLocalToGlobalMapping(dm, &ltog));
-  PetscCall(PetscMalloc5(disc->ncell * disc->ndof, &disc->lidx, disc->ncell * disc->ndof, &disc->gidx,
-    disc->ncell * disc->nq, &disc->wdetJ, disc->ncell * disc->nq * 9, &disc->invJ, disc->ncell * disc->nq * 3,
-    &disc->xq));
-  PetscCall(PetscMalloc3(disc->nq * 3, &v, disc->nq * 9, &J, disc->nq, &detJ));
-  PetscCall(DMGetCoordinateDM(dm, &cdm));
-  PetscCall(DMGetLocalSection(cdm, &cs));
-  PetscCall(DMGetCoordinatesLocal(dm, &X));
+  PetscCall(PetscMalloc2(disc->ncell * disc->ndof, &disc->lidx, disc->ncell * disc->ndof, &disc->gidx));
   for (PetscInt i = 0; i < disc->ncell; ++i) {
-    PetscInt  c = disc->cStart + i, n, *idx = NULL;
-    PetscReal *iJ = disc->invJ + i * disc->nq * 9;
-
+    PetscInt c = disc->cStart + i, n, *idx = NULL;
     PetscCall(DMPlexGetClosureIndices(dm, s, s, c, PETSC_TRUE, &n, &idx, NULL, NULL));
     PetscCheck(n == disc->ndof, PETSC_COMM_SELF, PETSC_ERR_PLIB,
       "Cell %" PetscInt_FMT " has %" PetscInt_FMT " closure dofs, expected %" PetscInt_FMT, c, n, disc->ndof);
     PetscCall(PetscArraycpy(disc->lidx + i * n, idx, n));
     PetscCall(DMPlexRestoreClosureIndices(dm, s, s, c, PETSC_TRUE, &n, &idx, NULL, NULL));
+  }
+  PetscCall(ISLocalToGlobalMappingApply(ltog, disc->ncell * disc->ndof, disc->lidx, disc->gidx));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
 
-    for (PetscInt q = 0; q < disc->nq; ++q) detJ[q] = -1.0;
-    PetscCall(DMPlexComputeCellGeometryFEM(dm, c, quad, v, J, iJ, detJ));
-    /* Affine cells may get their (constant) geometry at the first point only. */
-    for (PetscInt q = 1; q < disc->nq; ++q)
-      if (detJ[q] == -1.0) {
-        detJ[q] = detJ[0];
-        PetscCall(PetscArraycpy(iJ + q * 9, iJ, 9));
-      }
-    for (PetscInt q = 0; q < disc->nq; ++q) {
-      PetscCheck(detJ[q] > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG,
-        "Cell %" PetscInt_FMT " is inverted or degenerate (det J = %g at quadrature point %" PetscInt_FMT ")", c,
-        (double)detJ[q], q);
-      disc->wdetJ[i * disc->nq + q] = disc->w[q] * detJ[q];
+/* Coordinate nodes per cell (of the first local cell; 0 without cells) and whether the coordinates
+   live on the vertices alone (a first-order mesh). */
+static PetscErrorCode CoordinateLayout(IndDisc disc, PetscInt *nn, PetscBool *on_vertices)
+{
+  DM           dm = disc->dm, cdm;
+  PetscSection cs;
+  PetscInt     pStart, pEnd, vStart, vEnd;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMGetCoordinateDM(dm, &cdm));
+  PetscCall(DMGetLocalSection(cdm, &cs));
+  PetscCall(PetscSectionGetChart(cs, &pStart, &pEnd));
+  PetscCall(DMPlexGetDepthStratum(dm, 0, &vStart, &vEnd));
+  *on_vertices = PETSC_TRUE;
+  for (PetscInt p = pStart; p < pEnd && *on_vertices; ++p) {
+    PetscInt dof;
+    PetscCall(PetscSectionGetDof(cs, p, &dof));
+    if (dof && (p < vStart || p >= vEnd)) *on_vertices = PETSC_FALSE;
+  }
+  *nn = 0;
+  if (disc->ncell) {
+    Vec          X;
+    PetscScalar *xc = NULL;
+    PetscInt     nc;
+    PetscCall(DMGetCoordinatesLocal(dm, &X));
+    PetscCall(DMPlexVecGetClosure(cdm, cs, X, disc->cStart, &nc, &xc));
+    PetscCall(DMPlexVecRestoreClosure(cdm, cs, X, disc->cStart, &nc, &xc));
+    *nn = nc / 3;
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The position of every displacement node in a local vector of the displacement's layout: on a
+   first-order mesh with P1/Q1 the nodes are the vertices; otherwise each cell's nodes are
+   interpolated from its coordinate closure at their reference points. */
+static PetscErrorCode NodePositions(IndDisc disc, PetscInt nn, PetscBool on_vertices)
+{
+  DM           dm = disc->dm, cdm;
+  PetscSection s, cs;
+  Vec          X;
+  PetscScalar *xn;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMGetLocalSection(dm, &s));
+  PetscCall(DMGetCoordinateDM(dm, &cdm));
+  PetscCall(DMGetLocalSection(cdm, &cs));
+  PetscCall(DMGetCoordinatesLocal(dm, &X));
+  PetscCall(DMCreateLocalVector(dm, &disc->Xloc));
+  PetscCall(VecGetArray(disc->Xloc, &xn));
+  if (on_vertices && disc->degree == 1) {
+    const PetscScalar *x;
+    PetscInt           vStart, vEnd;
+    PetscCall(DMPlexGetDepthStratum(dm, 0, &vStart, &vEnd));
+    PetscCall(VecGetArrayRead(X, &x));
+    for (PetscInt v = vStart; v < vEnd; ++v) {
+      PetscInt dof, cdof, o, co;
+      PetscCall(PetscSectionGetDof(s, v, &dof));
+      PetscCall(PetscSectionGetDof(cs, v, &cdof));
+      PetscCheck(dof == 3 && cdof == 3, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+        "Vertex %" PetscInt_FMT " has %" PetscInt_FMT " displacement and %" PetscInt_FMT " coordinate values", v, dof,
+        cdof);
+      PetscCall(PetscSectionGetOffset(s, v, &o));
+      PetscCall(PetscSectionGetOffset(cs, v, &co));
+      for (int d = 0; d < 3; ++d) xn[o + d] = x[co + d];
     }
-    /* Not DMPlexReferenceToCoordinates: in PETSc 3.18 it re-sorts a mesh label on every call, which
-       made this loop quadratic in the number of cells. */
-    {
-      PetscScalar *xc = NULL;
+    PetscCall(VecRestoreArrayRead(X, &x));
+  } else {
+    PetscDualSpace  sp;
+    PetscQuadrature nodes;
+    PetscReal      *ref, *Nx = NULL;
+    /* each Lagrange node is the point of its evaluation functional; functional 3a is node a's */
+    PetscCall(PetscFEGetDualSpace(disc->fe, &sp));
+    PetscCall(PetscMalloc1(disc->nb * 3, &ref));
+    for (PetscInt a = 0; a < disc->nb; ++a) {
+      PetscQuadrature  f;
+      PetscInt         np;
+      const PetscReal *pt;
+      PetscCall(PetscDualSpaceGetFunctional(sp, 3 * a, &f));
+      PetscCall(PetscQuadratureGetData(f, NULL, NULL, &np, &pt, NULL));
+      PetscCheck(np == 1, PETSC_COMM_SELF, PETSC_ERR_SUP, "Node %" PetscInt_FMT " is not a point evaluation", a);
+      for (int d = 0; d < 3; ++d) ref[3 * a + d] = pt[d];
+    }
+    PetscCall(PetscQuadratureCreate(PETSC_COMM_SELF, &nodes));
+    PetscCall(PetscQuadratureSetData(nodes, 3, 1, disc->nb, ref, NULL));
+    if (disc->ncell) PetscCall(CoordinateBasis(disc->simplex, nodes, disc->nb, nn, &Nx, NULL));
+    for (PetscInt i = 0; i < disc->ncell; ++i) {
+      PetscScalar    *xc = NULL;
+      PetscInt        nc;
+      const PetscInt *idx = disc->lidx + i * disc->ndof;
+      PetscCall(DMPlexVecGetClosure(cdm, cs, X, disc->cStart + i, &nc, &xc));
+      PetscCheck(nc == 3 * nn, PETSC_COMM_SELF, PETSC_ERR_SUP,
+        "Cell %" PetscInt_FMT " has %" PetscInt_FMT " coordinate values, expected %" PetscInt_FMT, disc->cStart + i, nc,
+        3 * nn);
+      for (PetscInt a = 0; a < disc->nb; ++a)
+        for (int d = 0; d < 3; ++d) {
+          PetscReal v = 0.0;
+          for (PetscInt k = 0; k < nn; ++k) v += Nx[a * nn + k] * PetscRealPart(xc[3 * k + d]);
+          xn[idx[3 * a + d]] = v;
+        }
+      PetscCall(DMPlexVecRestoreClosure(cdm, cs, X, disc->cStart + i, &nc, &xc));
+    }
+    PetscCall(PetscFree(Nx));
+    PetscCall(PetscQuadratureDestroy(&nodes));
+  }
+  PetscCall(VecRestoreArray(disc->Xloc, &xn));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Every cell must map onto its reference cell with det J > 0 at every quadrature point. When the
+   displacement basis holds the coordinate map (a mesh of the same or a lower order), the assembly
+   recomputes J from the node positions (IndDiscGradients) and nothing is stored; a curved mesh under
+   P1/Q1 has its own coordinate basis, and its weights and inverse Jacobians are kept. */
+static PetscErrorCode CheckGeometry(IndDisc disc, PetscQuadrature quad, PetscInt nn)
+{
+  DM                 dm = disc->dm, cdm;
+  PetscSection       cs;
+  Vec                X;
+  const PetscScalar *xn;
+  PetscReal         *dNx = NULL, *Nx = NULL, *xc;
+  const PetscBool    own = nn <= disc->nb ? PETSC_TRUE : PETSC_FALSE;
+  const PetscInt     n   = own ? disc->nb : nn;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMGetCoordinateDM(dm, &cdm));
+  PetscCall(DMGetLocalSection(cdm, &cs));
+  PetscCall(DMGetCoordinatesLocal(dm, &X));
+  if (!own) {
+    PetscCall(CoordinateBasis(disc->simplex, quad, disc->nq, nn, &Nx, &dNx));
+    PetscCall(PetscMalloc2(disc->ncell * disc->nq, &disc->wdetJ, disc->ncell * disc->nq * 9, &disc->invJ));
+  }
+  PetscCall(PetscMalloc1(3 * n, &xc));
+  PetscCall(VecGetArrayRead(disc->Xloc, &xn));
+  for (PetscInt i = 0; i < disc->ncell; ++i) {
+    const PetscInt   c  = disc->cStart + i;
+    const PetscReal *dN = own ? disc->dN : dNx;
+    if (own) IndDiscCellNodes(disc, i, xn, xc);
+    else {
+      PetscScalar *cl = NULL;
       PetscInt     nc;
-      PetscReal   *xq = disc->xq + i * disc->nq * 3;
-      PetscCall(DMPlexVecGetClosure(cdm, cs, X, c, &nc, &xc));
-      if (!Nx) {
-        nn = nc / 3;
-        PetscCall(CoordinateBasis(simplex, quad, disc->nq, nn, &Nx));
-      }
+      PetscCall(DMPlexVecGetClosure(cdm, cs, X, c, &nc, &cl));
       PetscCheck(nc == 3 * nn, PETSC_COMM_SELF, PETSC_ERR_SUP,
         "Cell %" PetscInt_FMT " has %" PetscInt_FMT " coordinate values, expected %" PetscInt_FMT, c, nc, 3 * nn);
-      for (PetscInt q = 0; q < disc->nq; ++q)
-        for (int d = 0; d < 3; ++d) {
-          xq[q * 3 + d] = 0.0;
-          for (PetscInt a = 0; a < nn; ++a) xq[q * 3 + d] += Nx[q * nn + a] * PetscRealPart(xc[3 * a + d]);
-        }
-      PetscCall(DMPlexVecRestoreClosure(cdm, cs, X, c, &nc, &xc));
+      for (PetscInt k = 0; k < nc; ++k) xc[k] = PetscRealPart(cl[k]);
+      PetscCall(DMPlexVecRestoreClosure(cdm, cs, X, c, &nc, &cl));
+    }
+    for (PetscInt q = 0; q < disc->nq; ++q) {
+      PetscReal J[9] = {0}, det;
+      for (PetscInt a = 0; a < n; ++a)
+        for (int d = 0; d < 3; ++d)
+          for (int k = 0; k < 3; ++k) J[3 * d + k] += xc[3 * a + d] * dN[(q * n + a) * 3 + k];
+      det = IndDet3(J);
+      PetscCheck(det > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG,
+        "Cell %" PetscInt_FMT " is inverted or degenerate (det J = %g at quadrature point %" PetscInt_FMT ")", c,
+        (double)det, q);
+      if (!own) {
+        IndInverse3(J, det, disc->invJ + (i * disc->nq + q) * 9);
+        disc->wdetJ[i * disc->nq + q] = disc->w[q] * det;
+      }
     }
   }
+  PetscCall(VecRestoreArrayRead(disc->Xloc, &xn));
+  PetscCall(PetscFree(xc));
   PetscCall(PetscFree(Nx));
-  PetscCall(ISLocalToGlobalMappingApply(ltog, disc->ncell * disc->ndof, disc->lidx, disc->gidx));
-  PetscCall(PetscFree3(v, J, detJ));
-  PetscCall(PetscLogEventEnd(IndLog.geometry, 0, 0, 0, 0));
+  PetscCall(PetscFree(dNx));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -167,65 +292,60 @@ PetscErrorCode IndDiscCreate(IndMesh mesh, IndDisc *out)
   PetscCall(PetscQuadratureGetData(quad, NULL, NULL, &disc->nq, NULL, &disc->w));
   PetscCall(CacheReferenceTabulation(disc));
   disc->simplex = mesh->simplex;
-  PetscCall(CacheCells(disc, disc->simplex, quad));
+  {
+    PetscInt  nn          = 0;
+    PetscBool on_vertices = PETSC_FALSE;
+    PetscCall(PetscLogEventBegin(IndLog.geometry, 0, 0, 0, 0));
+    PetscCall(CacheIndices(disc));
+    PetscCall(CoordinateLayout(disc, &nn, &on_vertices));
+    PetscCall(NodePositions(disc, nn, on_vertices));
+    PetscCall(CheckGeometry(disc, quad, nn));
+    PetscCall(PetscLogEventEnd(IndLog.geometry, 0, 0, 0, 0));
+  }
   *out = disc;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode IndDiscQuadraturePoints(IndDisc disc, PetscReal **xq)
+{
+  DM              dm = disc->dm, cdm;
+  PetscSection    cs;
+  PetscQuadrature quad;
+  Vec             X;
+  PetscReal      *Nx = NULL;
+  PetscInt        nn = 0;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscFEGetQuadrature(disc->fe, &quad));
+  PetscCall(DMGetCoordinateDM(dm, &cdm));
+  PetscCall(DMGetLocalSection(cdm, &cs));
+  PetscCall(DMGetCoordinatesLocal(dm, &X));
+  PetscCall(PetscMalloc1(disc->ncell * disc->nq * 3, xq));
+  for (PetscInt i = 0; i < disc->ncell; ++i) {
+    PetscScalar *xc = NULL;
+    PetscInt     nc;
+    PetscReal   *x = *xq + i * disc->nq * 3;
+    PetscCall(DMPlexVecGetClosure(cdm, cs, X, disc->cStart + i, &nc, &xc));
+    if (!Nx) {
+      nn = nc / 3;
+      PetscCall(CoordinateBasis(disc->simplex, quad, disc->nq, nn, &Nx, NULL));
+    }
+    for (PetscInt q = 0; q < disc->nq; ++q)
+      for (int d = 0; d < 3; ++d) {
+        x[q * 3 + d] = 0.0;
+        for (PetscInt a = 0; a < nn; ++a) x[q * 3 + d] += Nx[q * nn + a] * PetscRealPart(xc[3 * a + d]);
+      }
+    PetscCall(DMPlexVecRestoreClosure(cdm, cs, X, disc->cStart + i, &nc, &xc));
+  }
+  PetscCall(PetscFree(Nx));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 PetscErrorCode IndDiscNodeCoordinates(IndDisc disc, Vec *coords)
 {
-  DM              dm = disc->dm, cdm;
-  PetscSection    cs;
-  PetscDualSpace  sp;
-  PetscQuadrature nodes;
-  PetscReal      *ref, *Nx = NULL;
-  PetscInt        nn = 0;
-  Vec             X, loc;
-  PetscScalar    *x;
-
   PetscFunctionBeginUser;
-  /* Each Lagrange node is the point of its evaluation functional; functional 3a is node a's. */
-  PetscCall(PetscFEGetDualSpace(disc->fe, &sp));
-  PetscCall(PetscMalloc1(disc->nb * 3, &ref));
-  for (PetscInt a = 0; a < disc->nb; ++a) {
-    PetscQuadrature  f;
-    PetscInt         np;
-    const PetscReal *pt;
-    PetscCall(PetscDualSpaceGetFunctional(sp, 3 * a, &f));
-    PetscCall(PetscQuadratureGetData(f, NULL, NULL, &np, &pt, NULL));
-    PetscCheck(np == 1, PETSC_COMM_SELF, PETSC_ERR_SUP, "Node %" PetscInt_FMT " is not a point evaluation", a);
-    for (int d = 0; d < 3; ++d) ref[3 * a + d] = pt[d];
-  }
-  PetscCall(PetscQuadratureCreate(PETSC_COMM_SELF, &nodes));
-  PetscCall(PetscQuadratureSetData(nodes, 3, 1, disc->nb, ref, NULL));
-  PetscCall(DMGetCoordinateDM(dm, &cdm));
-  PetscCall(DMGetLocalSection(cdm, &cs));
-  PetscCall(DMGetCoordinatesLocal(dm, &X));
-  PetscCall(DMCreateLocalVector(dm, &loc));
-  PetscCall(VecGetArray(loc, &x));
-  for (PetscInt i = 0; i < disc->ncell; ++i) {
-    PetscScalar    *xc = NULL;
-    PetscInt        nc;
-    const PetscInt *idx = disc->lidx + i * disc->ndof;
-    PetscCall(DMPlexVecGetClosure(cdm, cs, X, disc->cStart + i, &nc, &xc));
-    if (!Nx) {
-      nn = nc / 3;
-      PetscCall(CoordinateBasis(disc->simplex, nodes, disc->nb, nn, &Nx));
-    }
-    for (PetscInt a = 0; a < disc->nb; ++a)
-      for (int d = 0; d < 3; ++d) {
-        PetscReal v = 0.0;
-        for (PetscInt k = 0; k < nn; ++k) v += Nx[a * nn + k] * PetscRealPart(xc[3 * k + d]);
-        x[idx[3 * a + d]] = v;
-      }
-    PetscCall(DMPlexVecRestoreClosure(cdm, cs, X, disc->cStart + i, &nc, &xc));
-  }
-  PetscCall(VecRestoreArray(loc, &x));
-  PetscCall(PetscFree(Nx));
-  PetscCall(PetscQuadratureDestroy(&nodes));
-  PetscCall(DMCreateGlobalVector(dm, coords));
-  PetscCall(DMLocalToGlobal(dm, loc, INSERT_VALUES, *coords));
-  PetscCall(VecDestroy(&loc));
+  PetscCall(DMCreateGlobalVector(disc->dm, coords));
+  PetscCall(DMLocalToGlobal(disc->dm, disc->Xloc, INSERT_VALUES, *coords));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -234,7 +354,9 @@ PetscErrorCode IndDiscDestroy(IndDisc *disc)
   PetscFunctionBeginUser;
   if (!*disc) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(PetscFree2((*disc)->N, (*disc)->dN));
-  PetscCall(PetscFree5((*disc)->lidx, (*disc)->gidx, (*disc)->wdetJ, (*disc)->invJ, (*disc)->xq));
+  PetscCall(PetscFree2((*disc)->lidx, (*disc)->gidx));
+  PetscCall(PetscFree2((*disc)->wdetJ, (*disc)->invJ));
+  PetscCall(VecDestroy(&(*disc)->Xloc));
   PetscCall(PetscFEDestroy(&(*disc)->fe));
   PetscCall(PetscFree(*disc));
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -1,4 +1,5 @@
 #include "assembly_impl.h"
+#include "ind_pattern.h"
 
 const char *const IndTangentTypes[]     = {"consistent", "elastic", "IndTangent", "IND_TANGENT_", NULL};
 const char *const IndFormulationTypes[] = {"small", "finite", "IndFormulation", "IND_FORMULATION_", NULL};
@@ -23,7 +24,8 @@ PetscErrorCode IndAssemblyCreate(IndDisc disc, IndMaterials mats, IndHistory his
   PetscCall(IndOptionsEnum("-plastic_tangent", "Tangent of plastic points: consistent (quadratic Newton) or elastic",
     IndTangentTypes, (PetscEnum)a->tangent, (PetscEnum *)&a->tangent, NULL));
   PetscOptionsEnd();
-  PetscCall(PetscMalloc6(nd, &a->ue, nd, &a->fe, nd * nd, &a->Ke, disc->nb * 3, &a->G, 6 * nd, &a->DB, 6 * nd, &a->B));
+  PetscCall(PetscMalloc7(nd, &a->ue, nd, &a->xe, nd, &a->fe, nd * nd, &a->Ke, disc->nb * 3, &a->G, 6 * nd, &a->DB, 6 * nd,
+    &a->B));
   *out = a;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -32,9 +34,21 @@ PetscErrorCode IndAssemblyDestroy(IndAssembly *a)
 {
   PetscFunctionBeginUser;
   if (!*a) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCall(PetscFree6((*a)->ue, (*a)->fe, (*a)->Ke, (*a)->G, (*a)->DB, (*a)->B));
+  PetscCall(PetscFree7((*a)->ue, (*a)->xe, (*a)->fe, (*a)->Ke, (*a)->G, (*a)->DB, (*a)->B));
+  PetscCall(PetscFree((*a)->xq));
   PetscCall(IndMatInsertDestroy(&(*a)->insert));
   PetscCall(PetscFree(*a));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode IndAssemblySetBodyForce(IndAssembly a, IndVectorFn fn, void *ctx)
+{
+  PetscFunctionBeginUser;
+  a->body_force = fn;
+  a->body_ctx   = ctx;
+  /* only the manufactured-solution tests have one: the points are not kept otherwise */
+  PetscCall(PetscFree(a->xq));
+  if (fn) PetscCall(IndDiscQuadraturePoints(a->disc, &a->xq));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -54,41 +68,48 @@ static inline void Strain(PetscInt nb, const PetscReal *G, const PetscReal *u, P
   }
 }
 
-PetscErrorCode IndAssemblyResidual(IndAssembly a, Vec Uloc, Vec Floc)
+/* The cell loop of the residual (Floc) or of the commit (Floc NULL): the constitutive update of every
+   quadrature point from its committed state at the displacement Uloc; the residual only reads the
+   history, the commit writes the update over it. */
+static PetscErrorCode PointLoop(IndAssembly a, Vec Uloc, Vec Floc)
 {
   IndDisc            disc = a->disc;
   const PetscInt     nb = disc->nb, nq = disc->nq;
   const PetscInt     stride = a->history->stride;
-  const PetscScalar *u, *hold;
-  PetscScalar       *f, *htrial;
+  const PetscScalar *u;
+  PetscScalar       *f = NULL, *hist;
+  const PetscScalar *hist_read, *xn;
 
   PetscFunctionBeginUser;
-  PetscCall(PetscLogEventBegin(IndLog.residual, 0, 0, 0, 0));
   a->nfailed = a->nplastic = 0;
-  PetscCall(VecZeroEntries(Floc));
+  if (Floc) PetscCall(VecZeroEntries(Floc));
   PetscCall(VecGetArrayRead(Uloc, &u));
-  PetscCall(VecGetArray(Floc, &f));
-  PetscCall(VecGetArrayRead(a->history->committed, &hold));
-  PetscCall(VecGetArray(a->history->trial, &htrial));
+  PetscCall(VecGetArrayRead(disc->Xloc, &xn));
+  if (Floc) PetscCall(VecGetArray(Floc, &f));
+  if (Floc) {
+    PetscCall(VecGetArrayRead(a->history->committed, &hist_read));
+    hist = (PetscScalar *)hist_read; /* read only: the residual writes nothing back */
+  } else PetscCall(VecGetArray(a->history->committed, &hist));
   for (PetscInt i = 0; i < disc->ncell; ++i) {
     const IndMaterial *m   = &a->mats->mat[a->mats->cell_material[i]];
     const PetscInt    *idx = disc->lidx + i * disc->ndof;
 
-    GatherCell(disc, i, u, a->ue);
+    GatherCell(a, i, u, xn);
     PetscCall(PetscArrayzero(a->fe, disc->ndof));
     for (PetscInt q = 0; q < nq; ++q) {
-      const PetscReal  w   = disc->wdetJ[i * nq + q];
-      const PetscInt   off = i * stride + q * IND_HISTORY_NVAL;
-      PetscReal        P[9], dp; /* first Piola-Kirchhoff stress; at small strain the (symmetric) stress */
+      const PetscReal  w   = IndDiscGradients(disc, i, a->xe, q, a->G);
+      PetscReal       *h   = hist + i * stride + q * IND_HISTORY_NVAL;
+      PetscReal        P[9], dp, old[IND_HISTORY_NVAL]; /* P: first Piola-Kirchhoff stress; at small strain the stress */
+      PetscReal       *trial = Floc ? NULL : h;
       IndPlasticStatus status;
 
-      IndDiscGradients(disc, i, q, a->G);
+      PetscCall(PetscArraycpy(old, h, IND_HISTORY_NVAL));
       if (a->formulation == IND_FORMULATION_FINITE)
-        status = IndFinitePointStress(m, a->tangent, nb, a->G, a->ue, hold + off, htrial + off, P, &dp);
+        status = IndFinitePointStress(m, a->tangent, nb, a->G, a->ue, old, trial, P, &dp);
       else {
         PetscReal eps[6], s[6];
         Strain(nb, a->G, a->ue, eps);
-        status = MaterialResponse(m, a->tangent, eps, hold + off, htrial + off, s, NULL, &dp);
+        status = MaterialResponse(m, a->tangent, eps, old, trial, s, NULL, &dp);
         P[0] = s[0], P[1] = s[3], P[2] = s[5];
         P[3] = s[3], P[4] = s[1], P[5] = s[4];
         P[6] = s[5], P[7] = s[4], P[8] = s[2];
@@ -98,25 +119,45 @@ PetscErrorCode IndAssemblyResidual(IndAssembly a, Vec Uloc, Vec Floc)
         continue;
       }
       if (dp > 0) a->nplastic++;
+      if (!Floc) continue;
       for (PetscInt b = 0; b < nb; ++b) {
         const PetscReal gx = a->G[3 * b], gy = a->G[3 * b + 1], gz = a->G[3 * b + 2];
         for (int r = 0; r < 3; ++r) a->fe[3 * b + r] += w * (gx * P[3 * r] + gy * P[3 * r + 1] + gz * P[3 * r + 2]);
       }
       if (a->body_force) {
         PetscReal bf[3];
-        PetscCall(a->body_force(disc->xq + (i * nq + q) * 3, bf, a->body_ctx));
+        PetscCall(a->body_force(a->xq + (i * nq + q) * 3, bf, a->body_ctx));
         for (PetscInt b = 0; b < nb; ++b)
           for (int c = 0; c < 3; ++c) a->fe[3 * b + c] -= w * disc->N[q * nb + b] * bf[c];
       }
     }
-    for (PetscInt k = 0; k < disc->ndof; ++k) f[idx[k]] += a->fe[k];
+    if (Floc)
+      for (PetscInt k = 0; k < disc->ndof; ++k) f[idx[k]] += a->fe[k];
   }
-  PetscCall(VecRestoreArrayRead(a->history->committed, &hold));
-  PetscCall(VecRestoreArray(a->history->trial, &htrial));
+  if (Floc) PetscCall(VecRestoreArrayRead(a->history->committed, &hist_read));
+  else PetscCall(VecRestoreArray(a->history->committed, &hist));
+  PetscCall(VecRestoreArrayRead(disc->Xloc, &xn));
   PetscCall(VecRestoreArrayRead(Uloc, &u));
-  PetscCall(VecRestoreArray(Floc, &f));
-  PetscCall(PetscLogFlops(disc->ncell * nq * (30.0 * nb)));
+  if (Floc) PetscCall(VecRestoreArray(Floc, &f));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode IndAssemblyResidual(IndAssembly a, Vec Uloc, Vec Floc)
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(IndLog.residual, 0, 0, 0, 0));
+  PetscCall(PointLoop(a, Uloc, Floc));
+  PetscCall(PetscLogFlops(a->disc->ncell * a->disc->nq * (30.0 * a->disc->nb)));
   PetscCall(PetscLogEventEnd(IndLog.residual, 0, 0, 0, 0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode IndAssemblyCommit(IndAssembly a, Vec Uloc)
+{
+  PetscFunctionBeginUser;
+  PetscCall(PointLoop(a, Uloc, NULL));
+  PetscCheck(!a->nfailed, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+    "The return map failed at %" PetscInt_FMT " points of an accepted state", a->nfailed);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -149,7 +190,7 @@ PetscErrorCode IndAssemblyJacobian(IndAssembly a, Vec Uloc, Mat J)
 {
   IndDisc            disc = a->disc;
   const PetscInt     nb = disc->nb, nq = disc->nq, nd = disc->ndof, stride = a->history->stride;
-  const PetscScalar *u, *hold;
+  const PetscScalar *u, *xn, *hold;
   IndMatInsert       ins = J == a->J ? a->insert : NULL; /* cached positions are the matrix's own */
 
   PetscFunctionBeginUser;
@@ -157,17 +198,17 @@ PetscErrorCode IndAssemblyJacobian(IndAssembly a, Vec Uloc, Mat J)
   if (ins) PetscCall(IndMatInsertBegin(ins, J));
   else PetscCall(MatZeroEntries(J));
   PetscCall(VecGetArrayRead(Uloc, &u));
+  PetscCall(VecGetArrayRead(disc->Xloc, &xn));
   PetscCall(VecGetArrayRead(a->history->committed, &hold));
   for (PetscInt i = 0; i < disc->ncell; ++i) {
     const IndMaterial *m = &a->mats->mat[a->mats->cell_material[i]];
     const PetscInt    *g = disc->gidx + i * nd;
 
-    GatherCell(disc, i, u, a->ue);
+    GatherCell(a, i, u, xn);
     PetscCall(PetscArrayzero(a->Ke, nd * nd));
     for (PetscInt q = 0; q < nq; ++q) {
-      const PetscReal  w   = disc->wdetJ[i * nq + q];
+      const PetscReal  w   = IndDiscGradients(disc, i, a->xe, q, a->G);
       const PetscReal *old = hold + i * stride + q * IND_HISTORY_NVAL;
-      IndDiscGradients(disc, i, q, a->G);
       /* A failed point was already reported by the residual at this displacement, which stops the
          Newton iteration before any Jacobian; its NaN tangent cannot go unnoticed either. */
       if (a->formulation == IND_FORMULATION_FINITE)
@@ -185,6 +226,7 @@ PetscErrorCode IndAssemblyJacobian(IndAssembly a, Vec Uloc, Mat J)
     else PetscCall(MatSetValues(J, nd, g, nd, g, a->Ke, ADD_VALUES));
   }
   PetscCall(VecRestoreArrayRead(a->history->committed, &hold));
+  PetscCall(VecRestoreArrayRead(disc->Xloc, &xn));
   PetscCall(VecRestoreArrayRead(Uloc, &u));
   if (ins) PetscCall(IndMatInsertEnd(ins, J));
   else {
@@ -202,33 +244,39 @@ PetscErrorCode IndAssemblyCreateMatrix(IndAssembly a, Mat *J)
   MPI_Comm     comm = PetscObjectComm((PetscObject)disc->dm);
   PetscSection gs;
   PetscInt     nlocal;
-  Mat          P;
-  PetscScalar *zeros;
+  PetscBool    aij;
 
   PetscFunctionBeginUser;
   PetscCall(DMGetGlobalSection(disc->dm, &gs));
   PetscCall(PetscSectionGetConstrainedStorageSize(gs, &nlocal));
-  PetscCall(MatCreate(comm, &P));
-  PetscCall(MatSetType(P, MATPREALLOCATOR));
-  PetscCall(MatSetSizes(P, nlocal, nlocal, PETSC_DETERMINE, PETSC_DETERMINE));
-  PetscCall(MatSetBlockSize(P, 3));
-  PetscCall(MatSetUp(P));
-  PetscCall(PetscCalloc1(disc->ndof * disc->ndof, &zeros));
-  for (PetscInt i = 0; i < disc->ncell; ++i) {
-    const PetscInt *g = disc->gidx + i * disc->ndof;
-    PetscCall(MatSetValues(P, disc->ndof, g, disc->ndof, g, zeros, INSERT_VALUES));
-  }
-  PetscCall(PetscFree(zeros));
-  PetscCall(MatAssemblyBegin(P, MAT_FINAL_ASSEMBLY));
-  PetscCall(MatAssemblyEnd(P, MAT_FINAL_ASSEMBLY));
   PetscCall(MatCreate(comm, J));
   PetscCall(MatSetType(*J, MATAIJ));
   PetscCall(MatSetSizes(*J, nlocal, nlocal, PETSC_DETERMINE, PETSC_DETERMINE));
   PetscCall(MatSetBlockSize(*J, 3));
   PetscCall(MatSetOptionsPrefix(*J, "jac_"));
   PetscCall(MatSetFromOptions(*J));
-  PetscCall(MatPreallocatorPreallocate(P, PETSC_TRUE, *J));
-  PetscCall(MatDestroy(&P));
+  PetscCall(PetscObjectBaseTypeCompareAny((PetscObject)*J, &aij, MATSEQAIJ, MATMPIAIJ, ""));
+  if (aij) PetscCall(IndPatternFromCells(disc, *J));
+  else {
+    /* another type (-jac_mat_type): a dry run of the cell loop */
+    Mat          P;
+    PetscScalar *zeros;
+    PetscCall(MatCreate(comm, &P));
+    PetscCall(MatSetType(P, MATPREALLOCATOR));
+    PetscCall(MatSetSizes(P, nlocal, nlocal, PETSC_DETERMINE, PETSC_DETERMINE));
+    PetscCall(MatSetBlockSize(P, 3));
+    PetscCall(MatSetUp(P));
+    PetscCall(PetscCalloc1(disc->ndof * disc->ndof, &zeros));
+    for (PetscInt i = 0; i < disc->ncell; ++i) {
+      const PetscInt *g = disc->gidx + i * disc->ndof;
+      PetscCall(MatSetValues(P, disc->ndof, g, disc->ndof, g, zeros, INSERT_VALUES));
+    }
+    PetscCall(PetscFree(zeros));
+    PetscCall(MatAssemblyBegin(P, MAT_FINAL_ASSEMBLY));
+    PetscCall(MatAssemblyEnd(P, MAT_FINAL_ASSEMBLY));
+    PetscCall(MatPreallocatorPreallocate(P, PETSC_TRUE, *J));
+    PetscCall(MatDestroy(&P));
+  }
   PetscCall(MatSetOption(*J, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_TRUE));
   /* Every assembly sends the same (subset of) off-process entries, and conditions and contact only
      touch owned rows: the communication pattern is built once. */
@@ -251,23 +299,23 @@ PetscErrorCode IndAssemblyCellAverages(IndAssembly a, Vec Uloc, IndCellFields *o
 {
   IndDisc            disc = a->disc;
   const PetscInt     nq = disc->nq, stride = a->history->stride;
-  const PetscScalar *u, *hist;
+  const PetscScalar *u, *xn, *hist;
 
   PetscFunctionBeginUser;
   PetscCall(VecGetArrayRead(Uloc, &u));
+  PetscCall(VecGetArrayRead(disc->Xloc, &xn));
   PetscCall(VecGetArrayRead(a->history->committed, &hist));
   for (PetscInt i = 0; i < disc->ncell; ++i) {
     const IndMaterial *m   = &a->mats->mat[a->mats->cell_material[i]];
     PetscReal          vol = 0, vol0 = 0, savg[6] = {0}, eavg[6] = {0}, pavg = 0, xavg = 0, yavg = 0;
-    GatherCell(disc, i, u, a->ue);
+    GatherCell(a, i, u, xn);
     for (PetscInt q = 0; q < nq; ++q) {
       const PetscReal *h = hist + i * stride + q * IND_HISTORY_NVAL;
       const IndPlasticState *st = (const IndPlasticState *)h;
-      const PetscReal  w0 = disc->wdetJ[i * nq + q];
+      const PetscReal  w0 = IndDiscGradients(disc, i, a->xe, q, a->G);
       PetscReal        eps[6], ee[6], s[6], w = w0;
-      if (a->formulation == IND_FORMULATION_FINITE) IndAssemblyFinitePointFields(a, i, q, h, s, eps, &w);
+      if (a->formulation == IND_FORMULATION_FINITE) IndAssemblyFinitePointFields(a, i, h, s, eps, &w);
       else {
-        IndDiscGradients(disc, i, q, a->G);
         Strain(disc->nb, a->G, a->ue, eps);
         /* The committed state is the converged one: its stress is elastic in eps - eps_p (eps_p is
            deviatoric), with no return map to repeat. */
@@ -295,6 +343,7 @@ PetscErrorCode IndAssemblyCellAverages(IndAssembly a, Vec Uloc, IndCellFields *o
     out->yielding[i]    = yavg / vol0;
   }
   PetscCall(VecRestoreArrayRead(a->history->committed, &hist));
+  PetscCall(VecRestoreArrayRead(disc->Xloc, &xn));
   PetscCall(VecRestoreArrayRead(Uloc, &u));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -303,18 +352,19 @@ PetscErrorCode IndAssemblyCountInverted(IndAssembly a, Vec Uloc, PetscInt *ncell
 {
   IndDisc            disc = a->disc;
   const PetscInt     nb = disc->nb, nq = disc->nq;
-  const PetscScalar *u;
+  const PetscScalar *u, *xn;
 
   PetscFunctionBeginUser;
   *ncells = 0;
   *jmin   = PETSC_MAX_REAL;
   PetscCall(VecGetArrayRead(Uloc, &u));
+  PetscCall(VecGetArrayRead(disc->Xloc, &xn));
   for (PetscInt i = 0; i < disc->ncell; ++i) {
     PetscBool inverted = PETSC_FALSE;
-    GatherCell(disc, i, u, a->ue);
+    GatherCell(a, i, u, xn);
     for (PetscInt q = 0; q < nq; ++q) {
       PetscReal H[9], F[9], J;
-      IndDiscGradients(disc, i, q, a->G);
+      (void)IndDiscGradients(disc, i, a->xe, q, a->G);
       IndDeformationGradient(nb, a->G, a->ue, H, F);
       J = IndDet3(F);
       *jmin = PetscMin(*jmin, J);
@@ -322,6 +372,7 @@ PetscErrorCode IndAssemblyCountInverted(IndAssembly a, Vec Uloc, PetscInt *ncell
     }
     *ncells += inverted ? 1 : 0;
   }
+  PetscCall(VecRestoreArrayRead(disc->Xloc, &xn));
   PetscCall(VecRestoreArrayRead(Uloc, &u));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -106,8 +106,8 @@ IndPlasticStatus IndFinitePointStiffness(const IndMaterial *m, IndTangent tangen
   return status;
 }
 
-void IndAssemblyFinitePointFields(IndAssembly a, PetscInt i, PetscInt q, const PetscReal *h, PetscReal sigma[6],
-                                  PetscReal e[6], PetscReal *w)
+void IndAssemblyFinitePointFields(IndAssembly a, PetscInt i, const PetscReal *h, PetscReal sigma[6], PetscReal e[6],
+                                  PetscReal *w)
 {
   IndDisc                disc = a->disc;
   const IndMaterial     *m    = &a->mats->mat[a->mats->cell_material[i]];
@@ -115,9 +115,7 @@ void IndAssemblyFinitePointFields(IndAssembly a, PetscInt i, PetscInt q, const P
   IndLogStrain           ls;
   PetscReal              H[9], F[9], E[6], ee[6], T[6], S[6];
 
-  IndDiscGradients(disc, i, q, a->G);
   IndDeformationGradient(disc->nb, a->G, a->ue, H, F);
-  *w = disc->wdetJ[i * disc->nq + q];
   if (IndLogStrainFromGradient(H, &ls, E)) { /* a committed state is never inverted; report it, not hide it */
     for (int k = 0; k < 6; ++k) sigma[k] = e[k] = NAN;
     return;

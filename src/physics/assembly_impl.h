@@ -3,11 +3,17 @@
    assembly_finite.c: total Lagrangian finite strain): cell gathering and the material point. */
 #include "ind_assembly.h"
 #include "ind_elasticity.h"
+#include "ind_mat3.h"
 
-static inline void GatherCell(IndDisc disc, PetscInt i, const PetscScalar *u, PetscReal *ue)
+/* The displacements (ue) and the node positions (xe, from xn, the array of the discretisation's
+   Xloc) of local cell i. */
+static inline void GatherCell(IndAssembly a, PetscInt i, const PetscScalar *u, const PetscScalar *xn)
 {
-  const PetscInt *idx = disc->lidx + i * disc->ndof;
-  for (PetscInt k = 0; k < disc->ndof; ++k) ue[k] = PetscRealPart(u[idx[k]]);
+  const PetscInt *idx = a->disc->lidx + i * a->disc->ndof;
+  for (PetscInt k = 0; k < a->disc->ndof; ++k) {
+    a->ue[k] = PetscRealPart(u[idx[k]]);
+    a->xe[k] = PetscRealPart(xn[idx[k]]);
+  }
 }
 
 /* The constitutive update of one quadrature point from its committed history old (IND_HISTORY_NVAL
@@ -44,11 +50,6 @@ static inline void IndDeformationGradient(PetscInt nb, const PetscReal *G, const
   for (int k = 0; k < 9; ++k) F[k] = H[k] + (k % 4 == 0 ? 1.0 : 0.0);
 }
 
-static inline PetscReal IndDet3(const PetscReal F[9])
-{
-  return F[0] * (F[4] * F[8] - F[5] * F[7]) - F[1] * (F[3] * F[8] - F[5] * F[6]) + F[2] * (F[3] * F[7] - F[4] * F[6]);
-}
-
 /* Finite strain at one quadrature point (assembly_finite.c), from the physical gradients G (nb x 3)
    and the cell displacements ue: the first Piola-Kirchhoff stress P (3x3, row-major), writing the
    trial history when trial is not NULL; and Ke += w (B^T dS/dE_GL B + geometric stiffness). */
@@ -58,7 +59,8 @@ IndPlasticStatus IndFinitePointStress(const IndMaterial *m, IndTangent tangent, 
 IndPlasticStatus IndFinitePointStiffness(const IndMaterial *m, IndTangent tangent, PetscInt nb, const PetscReal *G,
                                          const PetscReal *ue, const PetscReal *old, PetscReal w, PetscReal *B,
                                          PetscReal *DB, PetscReal *Ke);
-/* Cauchy stress and spatial Hencky strain of quadrature point q of cell i (committed history h),
-   with the weight of its current volume. */
-void IndAssemblyFinitePointFields(IndAssembly assembly, PetscInt i, PetscInt q, const PetscReal *h, PetscReal sigma[6],
+/* Cauchy stress and spatial Hencky strain of a quadrature point of cell i (committed history h), from
+   the cell's displacements and gradients in the assembly's ue and G; w holds the reference weight
+   and becomes that of the current volume. */
+void IndAssemblyFinitePointFields(IndAssembly assembly, PetscInt i, const PetscReal *h, PetscReal sigma[6],
                                   PetscReal e[6], PetscReal *w);

@@ -25,11 +25,8 @@ PetscErrorCode IndHistoryCreate(IndDisc disc, IndHistory *out)
   PetscCall(DMSetLocalSection(h->dm, s));
   PetscCall(PetscSectionDestroy(&s));
   PetscCall(DMCreateGlobalVector(h->dm, &h->committed));
-  PetscCall(VecDuplicate(h->committed, &h->trial));
   PetscCall(PetscObjectSetName((PetscObject)h->committed, "history"));
-  PetscCall(PetscObjectSetName((PetscObject)h->trial, "history_trial"));
   PetscCall(VecZeroEntries(h->committed));
-  PetscCall(VecZeroEntries(h->trial));
 
   /* The cell loop indexes the history as i * stride: with no cell overlap every cell is owned, so the
      owned part of the global vector is exactly that; check it rather than assume it. */
@@ -51,19 +48,11 @@ PetscErrorCode IndHistoryCreate(IndDisc disc, IndHistory *out)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode IndHistoryCommit(IndHistory h)
-{
-  PetscFunctionBeginUser;
-  PetscCall(VecCopy(h->trial, h->committed));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 PetscErrorCode IndHistoryDestroy(IndHistory *h)
 {
   PetscFunctionBeginUser;
   if (!*h) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(VecDestroy(&(*h)->committed));
-  PetscCall(VecDestroy(&(*h)->trial));
   PetscCall(DMDestroy(&(*h)->dm));
   PetscCall(PetscFree(*h));
   PetscFunctionReturn(PETSC_SUCCESS);

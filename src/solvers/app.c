@@ -125,8 +125,7 @@ PetscErrorCode IndAppCreate(MPI_Comm comm, IndApp *out)
 PetscErrorCode IndAppSetBodyForce(IndApp app, IndVectorFn fn, void *ctx)
 {
   PetscFunctionBeginUser;
-  app->assembly->body_force = fn;
-  app->assembly->body_ctx   = ctx;
+  PetscCall(IndAssemblySetBodyForce(app->assembly, fn, ctx));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -151,11 +150,12 @@ static PetscReal SlideAt(IndApp app, PetscReal t)
   return app->scratch.length * IndLoadPathScratchFraction(&app->path, t);
 }
 
-/* The converged trial state becomes the accepted one. */
-static PetscErrorCode AcceptStep(IndApp app, PetscReal lambda_old, const IndStepResult *r)
+/* The converged state U becomes the accepted one. */
+static PetscErrorCode AcceptStep(IndApp app, PetscReal lambda_old, IndStepResult *r)
 {
   PetscFunctionBeginUser;
-  PetscCall(IndHistoryCommit(app->history));
+  PetscCall(IndSolverCommit(app->solver, app->U));
+  r->plastic = app->solver->nplastic;
   if (app->contact) {
     app->ddepth_last = r->depth - app->contact->depth_c;
     app->dslide_last = r->slide - SlideAt(app, app->path.t);
@@ -268,9 +268,6 @@ PetscErrorCode IndAppSolveStep(IndApp app, PetscReal t, IndStepResult *r)
   r->converged = sr.converged;
   PetscCall(PetscStrncpy(r->why, sr.why, sizeof(r->why)));
   if (r->converged) {
-    /* SNES may have evaluated the residual last at a line-search trial point, not at U. */
-    PetscCall(IndSolverEvaluate(s, app->U));
-    r->plastic = s->nplastic;
     if (!app->defer_commit) PetscCall(AcceptStep(app, lambda_old, r));
   } else {
     PetscCall(VecCopy(app->Uprev, app->U));

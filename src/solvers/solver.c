@@ -379,6 +379,20 @@ PetscErrorCode IndSolverEvaluate(IndSolver s, Vec U)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+PetscErrorCode IndSolverCommit(IndSolver s, Vec U)
+{
+  PetscInt n;
+
+  PetscFunctionBeginUser;
+  PetscCall(VecCopy(U, s->Ubc));
+  PetscCall(IndBCApplySolution(s->bc, s->load_factor, s->Ubc));
+  PetscCall(DMGlobalToLocal(s->dm, s->Ubc, INSERT_VALUES, s->Uloc));
+  PetscCall(IndAssemblyCommit(s->assembly, s->Uloc));
+  n = s->assembly->nplastic;
+  PetscCallMPI(MPI_Allreduce(&n, &s->nplastic, 1, MPIU_INT, MPI_SUM, PetscObjectComm((PetscObject)s->dm)));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode IndSolverDestroy(IndSolver *s)
 {
   PetscFunctionBeginUser;
