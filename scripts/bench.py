@@ -41,6 +41,29 @@ def sphere(n):
     return box(n) + SPHERE_BLOCK + ["-indenter_radius", "500", "-load_depth", "30", "-bc_symmetry", "left,front"]
 
 
+def cube(n):
+    # The plastic cube of the solver's scaling study: sphere_* at small strain (doc/performance.md)
+    return sphere(n) + ["-formulation", "small"]
+
+
+def weak(ranks):
+    """The plastic cube with the same cells of 31.25 nm and the same dofs per rank (107,811) on 1, 2, 4,
+    ... ranks: the block grows by 33 nodes in z, x, y in turn (doubling its nodes each time); the
+    quarter sphere presses its corner as in cube_32."""
+    assert ranks & (ranks - 1) == 0, "a power of 2"
+    nodes = [33, 33, 33]
+    k, axis = 1, 2
+    while k < ranks:
+        nodes[axis] *= 2
+        axis = (axis + 1) % 3
+        k *= 2
+    faces = [m - 1 for m in nodes]
+    size = [31.25 * f for f in faces]
+    return (["-dm_plex_box_faces", ",".join(map(str, faces)), "-dm_plex_box_lower", f"0,0,{-size[2]:g}",
+             "-dm_plex_box_upper", f"{size[0]:g},{size[1]:g},0"] + SPHERE_BLOCK +
+            ["-indenter_radius", "500", "-load_depth", "30", "-bc_symmetry", "left,front", "-formulation", "small"])
+
+
 def paper(h_tip, *extra):
     return PAPER + ["-mesh_geo_parameters", f"h_tip={h_tip},h_far={max(250, 20 * h_tip)}"] + list(extra)
 
@@ -57,6 +80,16 @@ CASES = {
     "elastic_64": (elastic(64), 2, False, "elastic Q1 box, one solve"),
     "sphere_100k": (sphere(31), 1, True, "frictionless sphere into a plastic Q1 box, one load step"),
     "sphere_800k": (sphere(63), 2, False, "frictionless sphere into a plastic Q1 box, one load step"),
+    "cube_32": (cube(32), 1, False, "sphere into a plastic Q1 cube, small strain, one load step (108k dofs)"),
+    "cube_48": (cube(48), 1, False, "the same cube (353k dofs)"),
+    "cube_64": (cube(64), 1, False, "the same cube (824k dofs)"),
+    "weak_1": (weak(1), 1, False, "weak scaling: the cube at 108k dofs per rank, 1 rank"),
+    "weak_2": (weak(2), 2, False, "weak scaling: 2 ranks, the block twice as deep"),
+    "weak_4": (weak(4), 4, False, "weak scaling: 4 ranks"),
+    "weak_8": (weak(8), 8, False, "weak scaling: 8 ranks"),
+    "weak_16": (weak(16), 16, False, "weak scaling: 16 ranks"),
+    "weak_32": (weak(32), 32, False, "weak scaling: 32 ranks"),
+    "weak_64": (weak(64), 64, False, "weak scaling: 64 ranks"),
     "paper_h15": (paper(15), 2, True, "paper case, load and unload (h_tip 15)"),
     "paper_h10": (paper(10), 2, True, "paper case, load and unload"),
     "paper_h6": (paper(6), 2, False, "paper case, load and unload"),
@@ -179,6 +212,33 @@ def markdown(rows):
     return "\n".join(lines)
 
 
+def growth(rows):
+    """Per family of cases (the name before its last '_': cube, sphere, paper, weak), how Krylov
+    iterations per Newton iteration and the time per Newton iteration grow with the dofs against
+    the family's smallest case: the ratio, and the exponent a of time per Newton ~ dofs^a."""
+    import math
+    families = {}
+    for r in rows:
+        families.setdefault(r["case"].rsplit("_", 1)[0], []).append(r)
+    lines = []
+    for fam, rs in families.items():
+        rs = sorted((r for r in rs if r["ok"] and r["newton"]), key=lambda r: (r["dofs"], r["ranks"]))
+        if len(rs) < 2:
+            continue
+        base = rs[0]
+        for r in rs:
+            kr = r["krylov_per_newton"] / base["krylov_per_newton"]
+            a = (math.log(r["s_per_newton"] / base["s_per_newton"]) / math.log(r["dofs"] / base["dofs"])
+                 if r["dofs"] != base["dofs"] and r["s_per_newton"] > 0 and base["s_per_newton"] > 0 else float("nan"))
+            lines.append(f"| {r['case']} | {r['dofs']:,} | {r['ranks']} | {r['dofs'] // r['ranks']:,} | "
+                         f"{r['krylov_per_newton']:.1f} | {kr:.2f} | {r['s_per_newton']:.3f} | {a:.2f} |")
+    if not lines:
+        return ""
+    head = ["| case | dofs | ranks | dofs/rank | Krylov/Newton | vs smallest | solve s/Newton | exponent |",
+            "|---|---|---|---|---|---|---|---|"]
+    return "\n".join(head + lines)
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("cases", nargs="*", help="case names (default: the default set)")
@@ -212,8 +272,12 @@ def main():
         w = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
         w.writeheader()
         w.writerows(rows)
+    grow = growth(rows)
+    if grow:
+        print("\nGrowth with the dofs (time per Newton iteration ~ dofs^exponent, against each family's smallest):")
+        print(grow)
     with open(os.path.join(args.out, f"bench-{stamp}.md"), "w") as f:
-        f.write(markdown(rows) + "\n")
+        f.write(markdown(rows) + "\n" + ("\n" + grow + "\n" if grow else ""))
     print(f"\nsaved {args.out}/bench-{stamp}.csv and .md" + ("" if args.keep else ""))
     if args.keep:
         print(f"run directories in {workdir}")
