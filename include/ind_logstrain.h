@@ -38,8 +38,11 @@ void IndSymEigen(const PetscReal A[6], PetscReal lambda[3], PetscReal V[9]);
 int IndLogStrainFromGradient(const PetscReal H[9], IndLogStrain *ls, PetscReal E[6]);
 /* S = T : 2 dE/dC, both tensor components. */
 void IndLogStrainStress(const IndLogStrain *ls, const PetscReal T[6], PetscReal S[6]);
-/* DS = dS/dE_GL (6x6) from the stress T and tangent DT = dT/dE (6x6) of the small-strain kernel. */
-void IndLogStrainTangent(const IndLogStrain *ls, const PetscReal T[6], const PetscReal DT[36], PetscReal DS[36]);
+/* DS = dS/dE_GL (6x6) from the stress T and the symmetric tangent DT = dT/dE (6x6) of the small-strain
+   kernel; isotropic: DT is an isotropic tensor (elastic), the same in every basis, which saves its
+   rotation into the eigenbasis of C. */
+void IndLogStrainTangent(const IndLogStrain *ls, const PetscReal T[6], const PetscReal DT[36], PetscBool isotropic,
+                         PetscReal DS[36]);
 /* Cauchy stress sigma = F S F^T / J (tensor components). */
 void IndLogStrainCauchy(const PetscReal F[9], PetscReal J, const PetscReal S[6], PetscReal sigma[6]);
 /* The Eulerian (spatial) Hencky strain (1/2) ln(F F^T) = R E R^T, engineering shears. */

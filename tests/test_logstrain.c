@@ -44,7 +44,7 @@ static int Point(const IndPlasticParams *m, const PetscReal F[9], const IndPlast
   if (FromF(F, &ls, E)) return 1;
   if (IndPlasticUpdate(m, E, old, st, T ? T : Tl, D, &dp) != IND_PLASTIC_OK) return 1;
   IndLogStrainStress(&ls, T ? T : Tl, S);
-  if (DS) IndLogStrainTangent(&ls, T ? T : Tl, D, DS);
+  if (DS) IndLogStrainTangent(&ls, T ? T : Tl, D, (PetscBool)(dp == 0.0), DS);
   return 0;
 }
 
@@ -235,6 +235,33 @@ static void TestDerivatives(unsigned long long *seed)
   Report("DS = dS/dE_GL against central differences (plastic, coincident)", worst_t, 1e-6);
 }
 
+/* An elastic (isotropic) tangent taken as the same in every basis gives the DS of its full rotation into
+   the eigenbasis of C, at distinct and coincident eigenvalues. */
+static void TestIsotropicTangent(unsigned long long *seed)
+{
+  const IndPlasticParams law = Law(IND_HARDENING_VOCE, 0.3, 0, 2.0, PETSC_TRUE);
+  PetscReal              worst = 0;
+  for (int t = 0; t < 60; ++t) {
+    PetscReal       R[9], Q[9], F[9], s[3], E[6], T[6], D[36], DSr[36], DSi[36], d[36], dp;
+    IndLogStrain    ls;
+    IndPlasticState old, st;
+    memset(&old, 0, sizeof(old));
+    for (int k = 0; k < 3; ++k) s[k] = PetscExpReal(0.6 * Rand(seed) - 0.3);
+    if (t % 3 == 1) s[1] = s[0];
+    if (t % 3 == 2) s[0] = s[1] = s[2];
+    RandomRotation(seed, R);
+    RandomRotation(seed, Q);
+    Deformation(R, Q, s, F);
+    (void)FromF(F, &ls, E);
+    (void)IndPlasticUpdate(&law, E, &old, &st, T, D, &dp);
+    IndLogStrainTangent(&ls, T, D, PETSC_FALSE, DSr);
+    IndLogStrainTangent(&ls, T, D, PETSC_TRUE, DSi);
+    for (int k = 0; k < 36; ++k) d[k] = DSi[k] - DSr[k];
+    worst = PetscMax(worst, MaxAbs(d, 36) / MaxAbs(DSr, 36));
+  }
+  Report("DS of an elastic tangent without its rotation = with it", worst, 1e-13);
+}
+
 /* A rotation Q applied after F leaves E, T and the history unchanged and rotates the Cauchy stress. */
 static void TestObjectivity(unsigned long long *seed)
 {
@@ -406,6 +433,7 @@ int main(int argc, char **argv)
   TestEigen(&seed);
   TestHencky(&seed);
   TestDerivatives(&seed);
+  TestIsotropicTangent(&seed);
   TestObjectivity(&seed);
   TestUniaxial();
   TestSimpleShear();

@@ -20,7 +20,9 @@ static inline IndPlasticStatus FinitePoint(const IndMaterial *m, IndTangent tang
   status = MaterialResponse(m, tangent, E, old, trial, T, DS ? D : NULL, dp);
   if (status != IND_PLASTIC_OK) return status;
   IndLogStrainStress(&ls, T, S);
-  if (DS) IndLogStrainTangent(&ls, T, D, DS);
+  /* a point that did not yield has the elastic, isotropic tangent (so has every point under
+     -tangent elastic) */
+  if (DS) IndLogStrainTangent(&ls, T, D, (PetscBool)(*dp == 0.0 || tangent == IND_TANGENT_ELASTIC), DS);
   return status;
 }
 
@@ -48,9 +50,10 @@ IndPlasticStatus IndFinitePointStress(const IndMaterial *m, IndTangent tangent, 
 }
 
 /* Ke += w (B^T DS B + geometric) on and above the diagonal, B the 6 x nd derivative of the
-   Green-Lagrange strain (engineering shears): column 3a+i of B is sym(F^T (e_i (x) G_a)). */
+   Green-Lagrange strain (engineering shears): column 3a+i of B is sym(F^T (e_i (x) G_a)). B and DS B are
+   stored by columns (Bt[6 k + r] = B[r][k]) so that each entry of Ke is one contiguous dot product. */
 static inline void AddFiniteStiffness(PetscInt nb, const PetscReal *G, const PetscReal F[9], const PetscReal S[6],
-                                      const PetscReal DS[36], PetscReal w, PetscReal *B, PetscReal *DB, PetscReal *Ke)
+                                      const PetscReal DS[36], PetscReal w, PetscReal *Bt, PetscReal *DBt, PetscReal *Ke)
 {
   const PetscInt nd = 3 * nb;
 
@@ -58,28 +61,26 @@ static inline void AddFiniteStiffness(PetscInt nb, const PetscReal *G, const Pet
     const PetscReal gx = G[3 * a], gy = G[3 * a + 1], gz = G[3 * a + 2];
     for (int i = 0; i < 3; ++i) {
       const PetscReal F0 = F[3 * i], F1 = F[3 * i + 1], F2 = F[3 * i + 2];
-      const PetscInt  c  = 3 * a + i;
-      B[0 * nd + c] = F0 * gx;
-      B[1 * nd + c] = F1 * gy;
-      B[2 * nd + c] = F2 * gz;
-      B[3 * nd + c] = F0 * gy + F1 * gx;
-      B[4 * nd + c] = F1 * gz + F2 * gy;
-      B[5 * nd + c] = F0 * gz + F2 * gx;
+      PetscReal      *b = Bt + 6 * (3 * a + i), *db = DBt + 6 * (3 * a + i);
+      b[0] = F0 * gx;
+      b[1] = F1 * gy;
+      b[2] = F2 * gz;
+      b[3] = F0 * gy + F1 * gx;
+      b[4] = F1 * gz + F2 * gy;
+      b[5] = F0 * gz + F2 * gx;
+      for (int r = 0; r < 6; ++r) {
+        const PetscReal *Dr = DS + 6 * r;
+        db[r] = w * (Dr[0] * b[0] + Dr[1] * b[1] + Dr[2] * b[2] + Dr[3] * b[3] + Dr[4] * b[4] + Dr[5] * b[5]);
+      }
     }
   }
-  for (int r = 0; r < 6; ++r)
-    for (PetscInt k = 0; k < nd; ++k) {
-      PetscReal v = 0;
-      for (int s = 0; s < 6; ++s) v += DS[6 * r + s] * B[s * nd + k];
-      DB[r * nd + k] = w * v;
-    }
   /* the upper triangle only: the cell loop mirrors it */
   for (PetscInt j = 0; j < nd; ++j) {
-    PetscReal *Kj = Ke + j * nd;
-    for (int r = 0; r < 6; ++r) {
-      const PetscReal  brj = B[r * nd + j];
-      const PetscReal *DBr = DB + r * nd;
-      for (PetscInt k = j; k < nd; ++k) Kj[k] += brj * DBr[k];
+    const PetscReal *b  = Bt + 6 * j;
+    PetscReal       *Kj = Ke + j * nd;
+    for (PetscInt k = j; k < nd; ++k) {
+      const PetscReal *db = DBt + 6 * k;
+      Kj[k] += b[0] * db[0] + b[1] * db[1] + b[2] * db[2] + b[3] * db[3] + b[4] * db[4] + b[5] * db[5];
     }
   }
   for (PetscInt a = 0; a < nb; ++a) {

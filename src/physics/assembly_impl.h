@@ -52,7 +52,8 @@ static inline void IndDeformationGradient(PetscInt nb, const PetscReal *G, const
 
 /* Finite strain at one quadrature point (assembly_finite.c), from the physical gradients G (nb x 3)
    and the cell displacements ue: the first Piola-Kirchhoff stress P (3x3, row-major), writing the
-   trial history when trial is not NULL; and Ke += w (B^T dS/dE_GL B + geometric stiffness). */
+   trial history when trial is not NULL; and Ke += w (B^T dS/dE_GL B + geometric stiffness), B and DB
+   workspaces of 6 nd. */
 IndPlasticStatus IndFinitePointStress(const IndMaterial *m, IndTangent tangent, PetscInt nb, const PetscReal *G,
                                       const PetscReal *ue, const PetscReal *old, PetscReal *trial, PetscReal P[9],
                                       PetscReal *dp);

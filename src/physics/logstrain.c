@@ -155,30 +155,46 @@ static inline PetscReal F1(PetscReal a, PetscReal b, PetscReal La, PetscReal Lb)
   return 0.5 * (La - Lb) / d;
 }
 
-/* Second divided difference f2(l_i, l_j, l_k), symmetric in its arguments, from the table of f1. The
-   difference quotient over the widest pair loses eps / spread to cancellation; below a relative spread
-   of 2e-4 the Taylor series about the mean, f''/2 + f''''/24 h2 (h2 the complete symmetric quadratic
-   of the offsets), is used instead: both are good to about 1e-12 relative there. */
-static inline PetscReal F2(const IndLogStrain *ls, int i, int j, int k)
+/* Second divided difference f2(l_hi, l_mid, l_lo), symmetric in its arguments, from the table of f1;
+   the arguments come ordered by eigenvalue, hi >= mid >= lo. The difference quotient over the widest
+   pair loses eps / spread to cancellation; below a relative spread of 2e-4 the Taylor series about the
+   mean, f''/2 + f''''/24 h2 (h2 the complete symmetric quadratic of the offsets), is used instead: both
+   are good to about 1e-12 relative there. */
+static inline PetscReal F2(const IndLogStrain *ls, int hi, int mid, int lo)
 {
   const PetscReal *mu = ls->lm1;
-  const PetscReal  m  = 1.0 + (mu[i] + mu[j] + mu[k]) / 3.0;
-  int              idx[3] = {i, j, k};
+  const PetscReal  m  = 1.0 + (mu[hi] + mu[mid] + mu[lo]) / 3.0;
 
-  /* sort the three positions by eigenvalue: hi, mid, lo */
-  for (int p = 0; p < 2; ++p)
-    for (int q = 0; q < 2 - p; ++q)
-      if (mu[idx[q]] < mu[idx[q + 1]]) {
-        const int t = idx[q];
-        idx[q]      = idx[q + 1];
-        idx[q + 1]  = t;
-      }
-  if (mu[idx[0]] - mu[idx[2]] <= 2e-4 * m) {
-    const PetscReal d0 = mu[i] + 1.0 - m, d1 = mu[j] + 1.0 - m, d2 = mu[k] + 1.0 - m;
+  if (mu[hi] - mu[lo] <= 2e-4 * m) {
+    const PetscReal d0 = mu[hi] + 1.0 - m, d1 = mu[mid] + 1.0 - m, d2 = mu[lo] + 1.0 - m;
     const PetscReal h2 = d0 * d0 + d1 * d1 + d2 * d2 + d0 * d1 + d0 * d2 + d1 * d2;
     return -0.25 / (m * m) - h2 / (8.0 * m * m * m * m);
   }
-  return (ls->f1[3 * idx[0] + idx[1]] - ls->f1[3 * idx[1] + idx[2]]) / (mu[idx[0]] - mu[idx[2]]);
+  return (ls->f1[3 * hi + mid] - ls->f1[3 * mid + lo]) / (mu[hi] - mu[lo]);
+}
+
+/* f2[9 i + 3 j + k] for all index triples: the 10 distinct values, each computed once with its
+   arguments in the order of the eigenvalues, copied to its permutations. */
+static void F2Table(const IndLogStrain *ls, PetscReal f2[27])
+{
+  const PetscReal *mu = ls->lm1;
+  int              o[3] = {0, 1, 2};
+
+  for (int p = 0; p < 2; ++p)
+    for (int q = 0; q < 2 - p; ++q)
+      if (mu[o[q]] < mu[o[q + 1]]) {
+        const int t = o[q];
+        o[q]        = o[q + 1];
+        o[q + 1]    = t;
+      }
+  for (int p = 0; p < 3; ++p)
+    for (int q = p; q < 3; ++q)
+      for (int r = q; r < 3; ++r) {
+        const int       i = o[p], j = o[q], k = o[r];
+        const PetscReal v = F2(ls, i, j, k);
+        f2[9 * i + 3 * j + k] = f2[9 * i + 3 * k + j] = f2[9 * j + 3 * i + k] = v;
+        f2[9 * j + 3 * k + i] = f2[9 * k + 3 * i + j] = f2[9 * k + 3 * j + i] = v;
+      }
 }
 
 int IndLogStrainFromGradient(const PetscReal H[9], IndLogStrain *ls, PetscReal E[6])
@@ -226,8 +242,9 @@ void IndLogStrainStress(const IndLogStrain *ls, const PetscReal T[6], PetscReal 
 /* Voigt pairs: entry v of a Voigt vector is the tensor component (va[v], vb[v]). */
 static const int va[6] = {0, 1, 2, 0, 1, 0}, vb[6] = {0, 1, 2, 1, 2, 2};
 
-/* out = L A L^T for 6x6 matrices (row-major). */
-static void Sandwich(const PetscReal L[36], const PetscReal A[36], PetscReal out[36])
+/* out = L A L^T for 6x6 matrices (row-major), A and so out symmetric: the upper triangle is computed
+   and mirrored. */
+static void SymSandwich(const PetscReal L[36], const PetscReal A[36], PetscReal out[36])
 {
   PetscReal W[36];
   for (int v = 0; v < 6; ++v)
@@ -237,61 +254,60 @@ static void Sandwich(const PetscReal L[36], const PetscReal A[36], PetscReal out
       W[6 * v + w] = x;
     }
   for (int v = 0; v < 6; ++v)
-    for (int w = 0; w < 6; ++w) {
+    for (int w = v; w < 6; ++w) {
       PetscReal x = 0;
       for (int u = 0; u < 6; ++u) x += L[6 * v + u] * W[6 * u + w];
-      out[6 * v + w] = x;
+      out[6 * v + w] = out[6 * w + v] = x;
     }
 }
 
-void IndLogStrainTangent(const IndLogStrain *ls, const PetscReal T[6], const PetscReal DT[36], PetscReal DS[36])
+void IndLogStrainTangent(const IndLogStrain *ls, const PetscReal T[6], const PetscReal DT[36], PetscBool isotropic,
+                         PetscReal DS[36])
 {
-  const PetscReal *N = ls->N;
+  const PetscReal *N = ls->N, *f1 = ls->f1;
   PetscReal        R[36], ReT[36], Tt[9], DTt[36], M[36], f2[27];
 
   /* R rotates tensor-Voigt vectors into the eigenbasis (A~ = N^T A N); engineering strains rotate with
      Re = W R W^-1 = R^-T (W = diag(1,1,1,2,2,2): the contraction of a stress with a strain is
      invariant), so a tangent D (engineering to tensor) becomes R D R^T there and Re^T D~ Re back. */
-  for (int v = 0; v < 6; ++v)
-    for (int w = 0; w < 6; ++w) {
-      const int a = va[v], b = vb[v], i = va[w], j = vb[w];
-      R[6 * v + w] = i == j ? N[3 * i + a] * N[3 * i + b] : N[3 * i + a] * N[3 * j + b] + N[3 * j + a] * N[3 * i + b];
+  for (int v = 0; v < 6; ++v) {
+    const int a = va[v], b = vb[v];
+    for (int i = 0; i < 3; ++i) R[6 * v + i] = N[3 * i + a] * N[3 * i + b];
+    for (int w = 3; w < 6; ++w) {
+      const int i = va[w], j = vb[w];
+      R[6 * v + w] = N[3 * i + a] * N[3 * j + b] + N[3 * j + a] * N[3 * i + b];
     }
-  {
-    PetscReal Tv[6];
-    for (int v = 0; v < 6; ++v) {
-      Tv[v] = 0;
-      for (int w = 0; w < 6; ++w) Tv[v] += R[6 * v + w] * T[w];
-    }
-    for (int p = 0; p < 3; ++p)
-      for (int q = 0; q < 3; ++q) Tt[3 * p + q] = Tv[voigt[p][q]];
   }
-  /* symmetric in its three arguments: the 10 distinct values, copied to their permutations */
-  for (int i = 0; i < 3; ++i)
-    for (int j = i; j < 3; ++j)
-      for (int k = j; k < 3; ++k) {
-        const PetscReal v = F2(ls, i, j, k);
-        f2[9 * i + 3 * j + k] = f2[9 * i + 3 * k + j] = f2[9 * j + 3 * i + k] = v;
-        f2[9 * j + 3 * k + i] = f2[9 * k + 3 * i + j] = f2[9 * k + 3 * j + i] = v;
-      }
-  Sandwich(R, DT, DTt);
+  {
+    PetscReal Tm[9];
+    ToMatrix(T, Tm);
+    IntoBasis(N, Tm, Tt);
+  }
+  F2Table(ls, f2);
+  /* an isotropic tangent (elastic) is the same in every basis */
+  if (isotropic) PetscArraycpy(DTt, DT, 36);
+  else SymSandwich(R, DT, DTt);
   /* In the eigenbasis, per unit engineering strain e_(cd): dE~ = 2 f1_cd e_(cd) (engineering) and
      dS~_ab = 2 f1_ab dT~_ab + 2 [d_ac f2_abd T~_db + d_ad f2_abc T~_cb + d_bd f2_abc T~_ac + d_bc f2_abd T~_ad],
-     the bracket from T : d2E[dC, .] with dC~ = e_c e_d^T + e_d e_c^T. */
-  for (int v = 0; v < 6; ++v)
-    for (int w = 0; w < 6; ++w) {
-      const int a = va[v], b = vb[v], c = va[w], d = vb[w];
+     the bracket from T : d2E[dC, .] with dC~ = e_c e_d^T + e_d e_c^T; symmetric in (ab, cd) as the
+     second derivative of a potential. */
+  for (int v = 0; v < 6; ++v) {
+    const int       a = va[v], b = vb[v];
+    const PetscReal fab = 4.0 * f1[3 * a + b];
+    for (int w = v; w < 6; ++w) {
+      const int c = va[w], d = vb[w];
       PetscReal g = 0;
       if (a == c) g += f2[9 * a + 3 * b + d] * Tt[3 * d + b];
       if (a == d) g += f2[9 * a + 3 * b + c] * Tt[3 * c + b];
       if (b == d) g += f2[9 * a + 3 * b + c] * Tt[3 * a + c];
       if (b == c) g += f2[9 * a + 3 * b + d] * Tt[3 * a + d];
-      M[6 * v + w] = 4.0 * ls->f1[3 * a + b] * DTt[6 * v + w] * ls->f1[3 * c + d] + 2.0 * g;
+      M[6 * v + w] = M[6 * w + v] = fab * DTt[6 * v + w] * f1[3 * c + d] + 2.0 * g;
     }
+  }
   /* DS = Re^T M Re, Re = W R W^-1 */
   for (int v = 0; v < 6; ++v)
     for (int w = 0; w < 6; ++w) ReT[6 * v + w] = R[6 * w + v] * (w < 3 ? 1.0 : 2.0) / (v < 3 ? 1.0 : 2.0);
-  Sandwich(ReT, M, DS);
+  SymSandwich(ReT, M, DS);
 }
 
 void IndLogStrainCauchy(const PetscReal F[9], PetscReal J, const PetscReal S[6], PetscReal sigma[6])
