@@ -17,20 +17,12 @@ typedef struct {
   PetscBool done;
 } Anatomy;
 
-/* F = the residual at U as the Newton iteration sees it (assembly, contact rows, conditions). */
+/* F = the residual at U as the Newton iteration sees it (assembly, contact rows, conditions), through
+   the run's own residual callback. */
 static PetscErrorCode Residual(IndApp app, Vec U, Vec F)
 {
-  IndSolver s = app->solver;
-
   PetscFunctionBeginUser;
-  PetscCall(VecCopy(U, s->Ubc));
-  PetscCall(IndBCApplySolution(app->bc, s->load_factor, s->Ubc));
-  PetscCall(DMGlobalToLocal(s->dm, s->Ubc, INSERT_VALUES, s->Uloc));
-  PetscCall(IndAssemblyResidual(app->assembly, s->Uloc, s->Floc));
-  PetscCall(VecZeroEntries(F));
-  PetscCall(DMLocalToGlobal(s->dm, s->Floc, ADD_VALUES, F));
-  if (app->contact) PetscCall(IndContactResidual(app->contact, s->Ubc, F));
-  PetscCall(IndBCApplyResidual(app->bc, s->load_factor, U, F));
+  PetscCall(SNESComputeFunction(app->solver->snes, U, F));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
