@@ -2,10 +2,13 @@
 """Run indent on several rank counts and compare the HDF5 outputs with scripts/h5compare.py.
 
   run_compare.py --mpiexec M --indent BIN --workdir D --np 1,2,3 [--reference REF.h5]
-                 [--field NAME:ATOL:RTOL ...] [--curve REF.csv --curve-rtol R] -- <indent options>
+                 [--reference-options "OPTS"] [--field NAME:ATOL:RTOL ...] [--curve REF.csv --curve-rtol R]
+                 -- <indent options>
 
 Without --reference the first rank count is the reference for the others (parallel consistency);
-with it, every run is compared against the committed file (regression). With --curve, every run's
+with it, every run is compared against the committed file (regression); with --reference-options, a
+run on the first rank count with these options added is the reference for every run (a variant that
+must not change the answer, e.g. "-mesh_reorder 0"). With --curve, every run's
 load_displacement.csv is also compared with REF.csv (load at each depth, tests/compare_curves.py).
 Exit 0 when all agree.
 """
@@ -25,6 +28,7 @@ def main():
     ap, argv, options = indentrun.parser_and_options("run_compare.py")
     ap.add_argument("--np", default="1,2,3")
     ap.add_argument("--reference")
+    ap.add_argument("--reference-options", help="options added to a reference run on the first rank count")
     ap.add_argument("--field", action="append", default=[])
     ap.add_argument("--curve")
     ap.add_argument("--curve-rtol", type=float, default=1e-6)
@@ -32,7 +36,14 @@ def main():
     args = ap.parse_args(argv)
 
     outputs = []
-    for np_ in [int(n) for n in args.np.split(",")]:
+    counts = [int(n) for n in args.np.split(",")]
+    if args.reference_options:
+        out = os.path.join(args.workdir, "reference")
+        if not indentrun.run(args, counts[0], options + args.reference_options.split(), out,
+                             f"indent on {counts[0]} rank(s) with {args.reference_options}"):
+            return 1
+        args.reference = os.path.join(out, "indent.h5")
+    for np_ in counts:
         out = os.path.join(args.workdir, f"np{np_}")
         if not indentrun.run(args, np_, options, out, f"indent on {np_} ranks"):
             return 1
