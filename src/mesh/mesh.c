@@ -419,7 +419,7 @@ PetscErrorCode IndMeshCreate(MPI_Comm comm, IndMesh *out)
     "Random displacement of interior vertices of the mesh as read, as a fraction of its shortest edge (tests)", "",
     NULL, perturb, &perturb, NULL));
   PetscCall(IndOptionsBool("-mesh_reorder",
-    "Number each rank's mesh points by reverse Cuthill-McKee after distribution (locality of assembly and solves)",
+    "Renumber the mesh as read by reverse Cuthill-McKee before distribution (locality of assembly and solves)",
     reorder, &reorder, NULL));
   PetscOptionsEnd();
   PetscCheck(refine >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-mesh_refine must be >= 0, got %" PetscInt_FMT, refine);
