@@ -61,6 +61,7 @@ struct _p_IndContact {
   PetscReal  *Uc;       /* 3n displacement at the committed state */
   PetscReal  *A;        /* n horizontal tributary areas (projected on z), reference or current */
   PetscInt   *status;   /* n, IndContactStatus of the last update */
+  PetscReal  *Rn;       /* n normal reactions of the last update */
   PetscReal   depth_c;  /* indenter depth at the committed state */
   PetscReal   axis_c[2]; /* indenter axis (x, y) at the committed state: a scratch moves it */
   PetscInt    mirror;    /* bit c set: a symmetry plane normal to axis c passes through the indenter's axis */
@@ -106,9 +107,9 @@ void IndContactNewtonRows(const PetscReal P[9], const PetscReal B[9], PetscInt m
    which must be at U, or the frozen reactions); fills the summary, whose change is |R - multiplier|. */
 PetscErrorCode IndContactUpdate(IndContact contact, Vec U, IndContactSummary *summary);
 /* Contact pressure (normal reaction over tributary area, GPa) and status (0 open, 1 stick, 2 slip) of
-   each contact node at U, in the first two components of its node in the global vector G (zero
-   elsewhere). */
-PetscErrorCode IndContactNodalFields(IndContact contact, Vec U, Vec G);
+   each contact node as the last update found them (an accepted step's: the state its summary counted),
+   in the first two components of its node in the global vector G (zero elsewhere). */
+PetscErrorCode IndContactNodalFields(IndContact contact, Vec G);
 /* The indenter's depth and the position of its axis (x, y, nm) for the step being solved; the slip of
    a node is taken relative to the indenter's motion since the committed state. */
 PetscErrorCode IndContactSetIndenterPosition(IndContact contact, PetscReal depth, const PetscReal axis[2]);

@@ -444,7 +444,7 @@ PetscErrorCode IndContactCreate(IndMesh mesh, IndDisc disc, IndBC bc, IndContact
     if (PetscRealPart(g[k]) > 0.5) c->n++;
   PetscCall(PetscMalloc5(c->n, &c->row, c->n, &c->grow, 3 * c->n, &c->X, c->n, &c->kdiag, c->n, &c->A));
   PetscCall(PetscCalloc5(3 * c->n, &c->R, 3 * c->n, &c->Rc, 3 * c->n, &c->L, 3 * c->n, &c->Uc, c->n, &c->status));
-  PetscCall(PetscCalloc2(3 * c->n, &c->Lu, c->n, &c->fixed));
+  PetscCall(PetscCalloc3(3 * c->n, &c->Lu, c->n, &c->fixed, c->n, &c->Rn));
   PetscCall(PetscCalloc1(c->n, &c->edge));
   c->n = 0;
   {
@@ -489,7 +489,7 @@ PetscErrorCode IndContactDestroy(IndContact *c)
   if (!*c) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(PetscFree5((*c)->row, (*c)->grow, (*c)->X, (*c)->kdiag, (*c)->A));
   PetscCall(PetscFree5((*c)->R, (*c)->Rc, (*c)->L, (*c)->Uc, (*c)->status));
-  PetscCall(PetscFree2((*c)->Lu, (*c)->fixed));
+  PetscCall(PetscFree3((*c)->Lu, (*c)->fixed, (*c)->Rn));
   PetscCall(PetscFree((*c)->edge));
   PetscCall(PetscFree(*c));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -649,6 +649,7 @@ PetscErrorCode IndContactUpdate(IndContact c, Vec U, IndContactSummary *sum)
     red[4] += ns.f[0];
     red[5] += ns.f[1];
     c->status[i] = ns.status;
+    c->Rn[i]     = ns.r[0];
     cnt[ns.status]++;
     if (ns.status != IND_CONTACT_OPEN) red[3] += c->A[i];
     red[6] = PetscMax(red[6], -ns.gap);
@@ -719,22 +720,19 @@ PetscErrorCode IndContactSetIndenterPosition(IndContact c, PetscReal depth, cons
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode IndContactNodalFields(IndContact c, Vec U, Vec G)
+PetscErrorCode IndContactNodalFields(IndContact c, Vec G)
 {
-  const PetscScalar *u;
-  PetscScalar       *g;
+  PetscScalar *g;
 
   PetscFunctionBeginUser;
+  /* Not solved again at the committed state: there the slip increment is zero and every node in
+     contact would read as sticking. */
   PetscCall(VecZeroEntries(G));
-  PetscCall(VecGetArrayRead(U, &u));
   PetscCall(VecGetArray(G, &g));
   for (PetscInt i = 0; i < c->n; ++i) {
-    IndContactNode ns;
-    IndContactNodeSolve(c, i, u + c->row[i], Multiplier(c, i), &ns);
-    g[c->row[i]]     = c->A[i] > 0 ? ns.r[0] / c->A[i] : 0.0;
-    g[c->row[i] + 1] = (PetscReal)ns.status;
+    g[c->row[i]]     = c->A[i] > 0 ? c->Rn[i] / c->A[i] : 0.0;
+    g[c->row[i] + 1] = (PetscReal)c->status[i];
   }
   PetscCall(VecRestoreArray(G, &g));
-  PetscCall(VecRestoreArrayRead(U, &u));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -294,7 +294,7 @@ PetscErrorCode IndOutputSetContact(IndOutput o, IndContact contact)
 }
 
 /* The contact's node values (pressure, status) moved onto the vertices, one vector each. */
-static PetscErrorCode GatherContactFields(IndOutput o, Vec U)
+static PetscErrorCode GatherContactFields(IndOutput o)
 {
   PetscSection       us;
   const PetscScalar *cl, *c3;
@@ -302,7 +302,7 @@ static PetscErrorCode GatherContactFields(IndOutput o, Vec U)
   PetscInt           n;
 
   PetscFunctionBeginUser;
-  PetscCall(IndContactNodalFields(o->contact, U, o->Gc));
+  PetscCall(IndContactNodalFields(o->contact, o->Gc));
   PetscCall(DMGlobalToLocal(o->disc->dm, o->Gc, INSERT_VALUES, o->Cloc));
   PetscCall(DMGetLocalSection(o->disc->dm, &us));
   PetscCall(VecGetArrayRead(o->Cloc, &cl));
@@ -370,7 +370,7 @@ PetscErrorCode IndOutputWriteStep(IndOutput o, PetscReal time, Vec U, IndAssembl
   PetscCall(IndOutputViewField(o, o->back, PETSC_TRUE));
   PetscCall(IndOutputViewField(o, o->yielding, PETSC_TRUE));
   if (o->contact) {
-    PetscCall(GatherContactFields(o, U));
+    PetscCall(GatherContactFields(o));
     PetscCall(IndOutputViewField(o, o->pressure, PETSC_FALSE));
     PetscCall(IndOutputViewField(o, o->status, PETSC_FALSE));
   }
