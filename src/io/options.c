@@ -18,7 +18,8 @@ static const char *lazy_prefixes[] = {"log", "options_", "malloc", "memory_view"
                                         "skip_petscrc",
                                       "objects_dump", "display", "nox", "x_", "draw_", "petscpartitioner_view",
                                       "ksp_converged_reason", "snes_converged_reason", "snes_test_", "mg_levels_",
-                                        "mg_coarse_", "pc_hypre_boomeramg_print", "matptap_", "matmatmult_", "mat_product_",
+                                      "mg_coarse_", "pc_hypre_boomeramg_print", "matptap_", "matmatmult_",
+                                      "mat_product_",
                                       NULL};
 
 PetscErrorCode IndOptionsCheckUnused(MPI_Comm comm)
