@@ -8,11 +8,16 @@
    and renamed, so a kill at any moment leaves the previous checkpoint whole. */
 #include "ind_app.h"
 
-/* Collective: writes the state of the last accepted step. */
+/* Collective: writes the state of the last accepted step; the checkpoint it replaces is kept whole
+   as IndRunDirPreviousCheckpoint(path) until the next one is complete. */
 PetscErrorCode IndCheckpointWrite(IndApp app, const char path[]);
 /* Collective: whether path is a checkpoint whose model options are this run's (an error names the
    first that differs); before the mesh is made, so that a refused restart changes no file. */
 PetscErrorCode IndCheckpointCheck(MPI_Comm comm, const char path[]);
+/* Collective: whether every dataset of the checkpoint at path is there and matches the checksum written
+   with it; why is "" when it does, or says what is wrong (for "'path' is damaged: <why>"). step: the
+   checkpoint's accepted steps (NULL: not wanted; -1 when unknown). */
+PetscErrorCode IndCheckpointVerify(MPI_Comm comm, const char path[], PetscInt *step, char why[], size_t len);
 /* Collective: restores the state into app, created from the checked options; a checkpoint of another
    mesh is refused. */
 PetscErrorCode IndCheckpointRead(IndApp app, const char path[]);

@@ -9,10 +9,18 @@
 
 /* The centroid of point p's vertices in the undeformed mesh (its key). */
 PetscErrorCode IndPointCentroid(DM dm, PetscInt p, PetscReal c[3]);
-/* Collective: n local rows of bs reals as dataset name of the viewer's current group. */
+#define IND_ROWS_CHECKSUM_LEN 17
+/* Collective: a checksum of x's values and their global positions (16 hex digits), the same on any
+   number of ranks. */
+PetscErrorCode IndRowsChecksum(Vec x, char sum[IND_ROWS_CHECKSUM_LEN]);
+/* Collective: n local rows of bs reals as dataset name of the viewer's current group, with their
+   checksum as the dataset's attribute "checksum". */
 PetscErrorCode IndRowsWrite(PetscViewer viewer, const char name[], PetscInt n, PetscInt bs, const PetscReal *rows);
-/* Collective: dataset name of the current group into a new vector of block size bs, laid out by PETSc. */
+/* Collective: dataset name of the current group into a new vector of block size bs, laid out by PETSc;
+   an error naming the file and the dataset when its values do not match the checksum written with them. */
 PetscErrorCode IndRowsRead(PetscViewer viewer, const char name[], PetscInt bs, Vec *x);
+/* Collective: whether dataset name (current group) has a checksum, and whether x, read from it, matches it. */
+PetscErrorCode IndRowsChecksumMatches(PetscViewer viewer, const char name[], Vec x, PetscBool *has, PetscBool *same);
 /* The keys of this rank's cells (their centroids), allocated (PetscFree). */
 PetscErrorCode IndCellCentroids(IndDisc disc, PetscReal **keys);
 /* Collective: for each of the n keys mine, the bs values that dataset values (NULL: the row number)

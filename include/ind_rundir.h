@@ -9,7 +9,8 @@
 typedef struct {
   char      dir[PETSC_MAX_PATH_LEN];        /* -output_dir */
   char      checkpoint[PETSC_MAX_PATH_LEN]; /* <dir>/checkpoint.h5: where checkpoints go */
-  PetscBool restart;                        /* -restart was given: continue from checkpoint */
+  PetscBool restart;                        /* -restart was given: continue from restart_file */
+  char      restart_file[PETSC_MAX_PATH_LEN]; /* checkpoint or its previous one, in <dir> */
   PetscBool overwrite;                      /* -output_overwrite */
   PetscBool ready;                          /* the directory exists and belongs to this run */
 } IndRunDir;
@@ -19,3 +20,5 @@ typedef struct {
 PetscErrorCode IndRunDirSetUp(MPI_Comm comm, PetscBool writes, IndRunDir *rundir);
 /* Writes path atomically: the caller wrote path.tmp; this renames it over path (rank 0 only calls it). */
 PetscErrorCode IndRenameInto(const char tmp[], const char path[]);
+/* The name under which checkpoint path is kept when a newer one replaces it (x.h5: x.previous.h5). */
+void           IndRunDirPreviousCheckpoint(const char path[], char *previous, size_t len);

@@ -22,8 +22,8 @@ INDENT_EX_TEMPFAIL=75
 # The files by which indent recognises a run in its -output_dir (RunFiles in src/io/rundir.c): a fresh
 # run refuses a directory holding any of them unless -output_overwrite is given.
 INDENT_RUN_FILES=(indent.h5 indent.xdmf indent.xdmf.tmp load_displacement.csv summary.txt summary.json
-  checkpoint.h5 checkpoint.h5.tmp mesh.msh mesh.msh.log imprint.csv imprint.png load_displacement.png
-  stress_slice.png)
+  checkpoint.h5 checkpoint.h5.tmp checkpoint.previous.h5 mesh.msh mesh.msh.log imprint.csv imprint.png
+  load_displacement.png stress_slice.png)
 
 indent_log() {
   printf 'indent-job %s: %s\n' "$(date '+%F %T')" "$*"

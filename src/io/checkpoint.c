@@ -1,4 +1,5 @@
 #define _POSIX_C_SOURCE 200809L /* sigaction, gmtime_r, strtok_r */
+#include <stdio.h>
 #include <string.h>
 #include <petscviewerhdf5.h>
 #include "ind_checkpoint.h"
@@ -6,7 +7,7 @@
 #include "ind_rundir.h"
 #include "ind_version.h"
 
-#define FORMAT      "indent checkpoint 2"
+#define FORMAT      "indent checkpoint 3" /* 3: a checksum on every dataset */
 #define CURVE_WIDTH 16 /* reals per IndCurvePoint */
 
 /* Options that do not change the answer, only how it is computed, shown or stored: a restart may
@@ -316,10 +317,18 @@ PetscErrorCode IndCheckpointWrite(IndApp app, const char path[])
   PetscCall(PetscViewerDestroy(&v));
 
   PetscCallMPI(MPI_Barrier(comm));
-  if (!rank) PetscCall(IndRenameInto(tmp, path));
+  if (!rank) {
+    char      previous[PETSC_MAX_PATH_LEN];
+    PetscBool exists;
+    IndRunDirPreviousCheckpoint(path, previous, sizeof(previous));
+    PetscCall(PetscTestFile(path, 'r', &exists));
+    if (exists) PetscCall(IndRenameInto(path, previous));
+    PetscCall(IndRenameInto(tmp, path));
+  }
   PetscCallMPI(MPI_Barrier(comm));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
+
 
 static PetscErrorCode RestoreNodes(IndApp app, const Nodes *nd, const PetscReal *vals)
 {
@@ -352,6 +361,31 @@ static PetscErrorCode RestoreNodes(IndApp app, const Nodes *nd, const PetscReal 
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* A damaged checkpoint is refused in one line that names what is wrong and, when the one it replaced
+   is whole, how to continue from that one. */
+static PetscErrorCode CheckWhole(MPI_Comm comm, const char path[])
+{
+  char     why[256], previous[PETSC_MAX_PATH_LEN], why_previous[256], advice[PETSC_MAX_PATH_LEN + 128] = "";
+  PetscInt step = -1;
+
+  PetscFunctionBeginUser;
+  PetscCall(IndCheckpointVerify(comm, path, NULL, why, sizeof(why)));
+  if (!why[0]) PetscFunctionReturn(PETSC_SUCCESS);
+  IndRunDirPreviousCheckpoint(path, previous, sizeof(previous));
+  {
+    PetscBool exists;
+    PetscCall(PetscTestFile(previous, 'r', &exists));
+    if (exists) PetscCall(IndCheckpointVerify(comm, previous, &step, why_previous, sizeof(why_previous)));
+    if (exists && !why_previous[0])
+      PetscCall(PetscSNPrintf(advice, sizeof(advice), "; the checkpoint before it, after step %" PetscInt_FMT
+                              ", is whole: continue from it with -restart %s", step, previous));
+    else if (exists)
+      PetscCall(PetscSNPrintf(advice, sizeof(advice), "; the one before it, %s, is damaged too: %s", previous,
+                              why_previous));
+  }
+  SETERRQ(comm, PETSC_ERR_FILE_UNEXPECTED, "-restart: checkpoint '%s' is damaged: %s%s", path, why, advice);
+}
+
 PetscErrorCode IndCheckpointCheck(MPI_Comm comm, const char path[])
 {
   PetscViewer v;
@@ -359,11 +393,13 @@ PetscErrorCode IndCheckpointCheck(MPI_Comm comm, const char path[])
   char       *format = NULL, *saved = NULL, *here = NULL, differ[600];
 
   PetscFunctionBeginUser;
+  PetscCall(CheckWhole(comm, path));
   PetscCall(PetscViewerHDF5Open(comm, path, FILE_MODE_READ, &v));
   PetscCall(PetscViewerHDF5HasAttribute(v, "/", "format", &has));
   if (has) PetscCall(PetscViewerHDF5ReadAttribute(v, "/", "format", PETSC_STRING, NULL, &format));
   if (has) PetscCall(PetscStrcmp(format, FORMAT, &same));
-  PetscCheck(same, comm, PETSC_ERR_FILE_UNEXPECTED, "-restart: '%s' is not an indent checkpoint", path);
+  PetscCheck(same, comm, PETSC_ERR_FILE_UNEXPECTED, "-restart: '%s' is %s", path,
+             has ? "a checkpoint of another indent version (its format differs)" : "not an indent checkpoint");
   PetscCall(PetscViewerHDF5ReadAttribute(v, "/", "model_options", PETSC_STRING, NULL, &saved));
   PetscCall(IndCheckpointModelOptions(&here));
   IndCheckpointOptionsDiffer(strcmp(saved, "(none)") ? saved : "", here, differ, sizeof(differ));

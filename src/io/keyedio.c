@@ -1,3 +1,5 @@
+#include <inttypes.h>
+#include <string.h>
 #include "ind_keyedio.h"
 
 PetscErrorCode IndPointCentroid(DM dm, PetscInt p, PetscReal c[3])
@@ -20,6 +22,36 @@ PetscErrorCode IndPointCentroid(DM dm, PetscInt p, PetscReal c[3])
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* splitmix64's finaliser: every input bit moves about half the output bits. */
+static uint64_t Mix(uint64_t z)
+{
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+  return z ^ (z >> 31);
+}
+
+PetscErrorCode IndRowsChecksum(Vec x, char sum[IND_ROWS_CHECKSUM_LEN])
+{
+  const PetscScalar *a;
+  PetscInt           n, rstart;
+  uint64_t           h = 0;
+
+  PetscFunctionBeginUser;
+  PetscCall(VecGetLocalSize(x, &n));
+  PetscCall(VecGetOwnershipRange(x, &rstart, NULL));
+  PetscCall(VecGetArrayRead(x, &a));
+  for (PetscInt k = 0; k < n; ++k) {
+    const PetscReal r = PetscRealPart(a[k]);
+    uint64_t        bits;
+    memcpy(&bits, &r, sizeof(bits));
+    h += Mix(bits ^ Mix((uint64_t)(rstart + k) + 0x9e3779b97f4a7c15ULL)); /* wraps: a sum modulo 2^64 */
+  }
+  PetscCall(VecRestoreArrayRead(x, &a));
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &h, 1, MPI_UINT64_T, MPI_SUM, PetscObjectComm((PetscObject)x)));
+  PetscCall(PetscSNPrintf(sum, IND_ROWS_CHECKSUM_LEN, "%016" PRIx64, h));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode IndRowsWrite(PetscViewer v, const char name[], PetscInt n, PetscInt bs, const PetscReal *rows)
 {
   Vec          x;
@@ -33,17 +65,50 @@ PetscErrorCode IndRowsWrite(PetscViewer v, const char name[], PetscInt n, PetscI
   for (PetscInt k = 0; k < n * bs; ++k) a[k] = rows[k];
   PetscCall(VecRestoreArray(x, &a));
   PetscCall(VecView(x, v));
+  {
+    char sum[IND_ROWS_CHECKSUM_LEN];
+    PetscCall(IndRowsChecksum(x, sum));
+    PetscCall(PetscViewerHDF5WriteAttribute(v, name, "checksum", PETSC_STRING, sum));
+  }
   PetscCall(VecDestroy(&x));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 PetscErrorCode IndRowsRead(PetscViewer v, const char name[], PetscInt bs, Vec *x)
 {
+  PetscBool has, same;
+
   PetscFunctionBeginUser;
   PetscCall(VecCreate(PetscObjectComm((PetscObject)v), x));
   PetscCall(VecSetBlockSize(*x, bs));
   PetscCall(PetscObjectSetName((PetscObject)*x, name));
   PetscCall(VecLoad(*x, v));
+  PetscCall(IndRowsChecksumMatches(v, name, *x, &has, &same));
+  if (has && !same) {
+    const char *file = NULL;
+    char        path[PETSC_MAX_PATH_LEN], *group = NULL;
+    PetscCall(PetscViewerFileGetName(v, &file));
+    PetscCall(PetscViewerHDF5GetGroup(v, name, &group));
+    PetscCall(PetscStrncpy(path, group, sizeof(path)));
+    PetscCall(PetscFree(group));
+    SETERRQ(PetscObjectComm((PetscObject)v), PETSC_ERR_FILE_UNEXPECTED,
+            "'%s' is damaged: dataset %s does not match the checksum written with it", file, path);
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode IndRowsChecksumMatches(PetscViewer v, const char name[], Vec x, PetscBool *has, PetscBool *same)
+{
+  char sum[IND_ROWS_CHECKSUM_LEN], *saved = NULL;
+
+  PetscFunctionBeginUser;
+  *same = PETSC_FALSE;
+  PetscCall(PetscViewerHDF5HasAttribute(v, name, "checksum", has));
+  if (!*has) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(IndRowsChecksum(x, sum));
+  PetscCall(PetscViewerHDF5ReadAttribute(v, name, "checksum", PETSC_STRING, NULL, &saved));
+  PetscCall(PetscStrcmp(sum, saved, same));
+  PetscCall(PetscFree(saved));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -1,5 +1,6 @@
 #define _XOPEN_SOURCE 700 /* realpath */
 #include <errno.h>
+#include <stdio.h>
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -9,17 +10,22 @@
 
 /* Every file a run (and scripts/plot-indent.py and export-curves.py after it) puts in its directory: a
    fresh run in the directory must not leave any of an earlier run's beside its own. */
-static const char *const RunFiles[] = {"indent.h5",          "indent.xdmf",           "indent.xdmf.tmp",
-                                       "load_displacement.csv", "summary.txt",        "summary.json",
-                                       "checkpoint.h5",      "checkpoint.h5.tmp",     "mesh.msh",
-                                       "mesh.msh.tmp",       "mesh.msh.log",          "imprint.csv",
-                                       "imprint.png",        "stress_slice.png",      "load_displacement.png",
-                                       "curve.niget",        "curve_hysitron.txt",    "imprint.xyz",
-                                       "imprint.gsf",        "csm.csv",               "csm.csv.tmp",
-                                       "csm.png",            "scratch.csv",           "scratch.csv.tmp",
-                                       "scratch.png",        "groove_along.csv",      "groove_across.csv",
-                                       "groove.png"};
+static const char *const RunFiles[] = {"indent.h5", "indent.xdmf", "indent.xdmf.tmp", "load_displacement.csv",
+                                       "summary.txt", "summary.json", "checkpoint.h5", "checkpoint.h5.tmp",
+                                       "checkpoint.previous.h5", "mesh.msh", "mesh.msh.tmp", "mesh.msh.log",
+                                       "imprint.csv", "imprint.png", "stress_slice.png", "load_displacement.png",
+                                       "curve.niget", "curve_hysitron.txt", "imprint.xyz", "imprint.gsf",
+                                       "csm.csv", "csm.csv.tmp", "csm.png", "scratch.csv", "scratch.csv.tmp",
+                                       "scratch.png", "groove_along.csv", "groove_across.csv", "groove.png"};
 #define NRUNFILES ((int)(sizeof(RunFiles) / sizeof(RunFiles[0])))
+
+void IndRunDirPreviousCheckpoint(const char path[], char *previous, size_t len)
+{
+  const size_t n = strlen(path);
+
+  if (n > 3 && !strcmp(path + n - 3, ".h5")) snprintf(previous, len, "%.*s.previous.h5", (int)(n - 3), path);
+  else snprintf(previous, len, "%s.previous", path);
+}
 
 PetscErrorCode IndRenameInto(const char tmp[], const char path[])
 {
@@ -135,8 +141,13 @@ PetscErrorCode IndRunDirSetUp(MPI_Comm comm, PetscBool writes, IndRunDir *rd)
     PetscCall(RestartFile(comm, restart, file, sizeof(file)));
     /* Output continues beside the checkpoint: the run's files there are the earlier part of this run. */
     if (!rank) {
+      char previous[PETSC_MAX_PATH_LEN], real_previous[PETSC_MAX_PATH_LEN];
       if (!realpath(file, real_ckpt)) real_ckpt[0] = 0;
       if (kind != 1 || !realpath(rd->checkpoint, real_here)) real_here[0] = 0;
+      /* or the checkpoint the last one replaced, kept beside it */
+      IndRunDirPreviousCheckpoint(rd->checkpoint, previous, sizeof(previous));
+      if (kind == 1 && real_ckpt[0] && realpath(previous, real_previous) && !strcmp(real_ckpt, real_previous))
+        PetscCall(PetscStrncpy(real_here, real_previous, sizeof(real_here)));
     }
     PetscCallMPI(MPI_Bcast(real_ckpt, sizeof(real_ckpt), MPI_CHAR, 0, comm));
     PetscCallMPI(MPI_Bcast(real_here, sizeof(real_here), MPI_CHAR, 0, comm));
@@ -148,6 +159,7 @@ PetscErrorCode IndRunDirSetUp(MPI_Comm comm, PetscBool writes, IndRunDir *rd)
                  "-output_dir the checkpoint's directory",
                  restart, rd->dir);
     }
+    PetscCall(PetscStrncpy(rd->restart_file, file, sizeof(rd->restart_file)));
     rd->restart = rd->ready = PETSC_TRUE;
     PetscFunctionReturn(PETSC_SUCCESS);
   }

@@ -64,7 +64,7 @@ PetscErrorCode IndAppCreate(MPI_Comm comm, IndApp *out)
     PetscCall(PetscOptionsHasName(NULL, NULL, "-indenter_type", &indenter));
     PetscCall(PetscOptionsHasHelp(NULL, &listing));
     PetscCall(IndRunDirSetUp(comm, (fields || (indenter && curve)) && !listing, &app->rundir));
-    if (app->rundir.restart) PetscCall(IndCheckpointCheck(comm, app->rundir.checkpoint));
+    if (app->rundir.restart) PetscCall(IndCheckpointCheck(comm, app->rundir.restart_file));
   }
 
   PetscCall(PetscLogStagePush(IndLog.setup));
@@ -101,7 +101,7 @@ PetscErrorCode IndAppCreate(MPI_Comm comm, IndApp *out)
   PetscCall(IndOptionsCheckUnused(comm));
   if (app->rundir.restart) {
     IndSummary sum = app->summary;
-    PetscCall(IndCheckpointRead(app, app->rundir.checkpoint));
+    PetscCall(IndCheckpointRead(app, app->rundir.restart_file));
     PetscCall(IndStepCSVTruncate(comm, app->rundir.dir, IND_CSM_FILE, app->path.accepted));
     PetscCall(IndStepCSVTruncate(comm, app->rundir.dir, IND_SCRATCH_FILE, app->path.accepted));
     PetscCall(IndOutputResume(app->output, sum ? sum->n : 0, sum ? sum->pts : NULL));
@@ -316,7 +316,12 @@ static PetscErrorCode RemoveCheckpoint(IndApp app)
 
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(app->comm, &rank));
-  if (!rank && app->rundir.ready) (void)remove(app->rundir.checkpoint);
+  if (!rank && app->rundir.ready) {
+    char previous[PETSC_MAX_PATH_LEN];
+    IndRunDirPreviousCheckpoint(app->rundir.checkpoint, previous, sizeof(previous));
+    (void)remove(app->rundir.checkpoint);
+    (void)remove(previous);
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -347,7 +352,7 @@ PetscErrorCode IndAppRun(IndApp app)
   PetscFunctionBeginUser;
   if (app->rundir.restart && !app->quiet)
     PetscCall(PetscPrintf(app->comm, "indent: continuing from %s after step %" PetscInt_FMT " (depth %g nm)\n",
-                          app->rundir.checkpoint, lp->accepted,
+                          app->rundir.restart_file, lp->accepted,
                           app->contact ? (double)app->contact->indenter.depth : 0.0));
   while (!IndLoadPathDone(lp)) {
     const PetscReal t = IndLoadPathTarget(lp);
