@@ -48,6 +48,9 @@ PetscBool      IndLoadPathScratching(const IndLoadPath *path, PetscReal t);
 /* Ends the program now (the indenter has left the surface during unloading). */
 void           IndLoadPathFinish(IndLoadPath *path);
 PetscBool      IndLoadPathDone(const IndLoadPath *path);
+/* The steps the program has left if none is cut back nor grows on an easy step (the loading's
+   increment is at its largest from the start by default): at most limit. */
+PetscInt       IndLoadPathStepsLeft(const IndLoadPath *path, PetscInt limit);
 /* The load factor the next attempt should reach. */
 PetscReal      IndLoadPathTarget(const IndLoadPath *path);
 void           IndLoadPathAccept(IndLoadPath *path, PetscInt newton_its);

@@ -4,6 +4,7 @@
    /fields/stress, /fields/strain, /fields/von_mises, /fields/plastic_strain, /fields/back_stress,
    /fields/yielding (cell averages), and with an indenter /fields/contact_pressure and
    /fields/contact_status (vertices). Provenance as attributes of "/". */
+#include "ind_warnings.h"
 #include <petscviewerhdf5.h>
 #include "ind_mesh.h"
 #include "ind_disc.h"
@@ -30,6 +31,7 @@ struct _p_IndOutput {
   IndDisc     disc;
   PetscBool   enabled;
   PetscBool   curve;   /* -output_curve */
+  PetscReal   size_warning; /* -output_size_warning, GB: field output expected beyond it is announced */
   FILE       *csv;     /* rank 0, opened at the first point */
   char        dir[PETSC_MAX_PATH_LEN];
   char        h5name[PETSC_MAX_PATH_LEN];
@@ -53,6 +55,12 @@ PetscErrorCode IndOutputCreate(IndMesh mesh, IndDisc disc, IndOutput *out);
 /* Adds the vertex fields contact_pressure (GPa) and contact_status (0 open, 1 stick, 2 slip). */
 PetscErrorCode IndOutputSetContact(IndOutput out, IndContact contact);
 PetscErrorCode IndOutputDestroy(IndOutput *out);
+/* Collective: the bytes of field values one written step adds to indent.h5 (0 without field output). */
+PetscErrorCode IndOutputBytesPerStep(IndOutput out, PetscReal *bytes);
+/* Collective, before the first step: steps_left more written steps must fit indent.h5 (an error
+   otherwise), and a warning (into w, printed) gives the estimate when they would exceed
+   -output_size_warning or the free space of the output directory's file system. */
+PetscErrorCode IndOutputCheckSize(IndOutput out, PetscInt steps_left, IndWarnings *w);
 /* A restarted run continues the earlier part's files: the curve is rewritten with the checkpoint's npts
    points (the lines of steps after the checkpoint go), and indent.h5 is extended from the checkpoint's
    output step, in the file's vertex and cell order whatever the rank count (output_resume.c). */

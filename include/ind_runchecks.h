@@ -20,6 +20,10 @@ PetscErrorCode IndRunCheckContactEdge(IndContact contact, PetscReal depth, char 
 PetscErrorCode IndRunCheckInverted(IndApp app, const char label[], char warning[], size_t len);
 /* warning[0] = 0, or the text: A(h_c) of the Oliver-Pharr analysis exceeds the surface's projected area. */
 PetscErrorCode IndRunCheckContactArea(IndContact contact, PetscReal area_hc, char warning[], size_t len);
+/* Whether the contact at the largest load, nodes of the modelled part in contact, resolves the contact
+   area for Oliver-Pharr: at least min_nodes over the whole indent (the modelled part times the model's
+   symmetry), about sqrt(min_nodes / pi) node spacings across its radius; why says otherwise. */
+void           IndRunCheckContactResolved(IndContact contact, PetscInt nodes, PetscInt min_nodes, char why[], size_t len);
 
 /* All of a step's checks, for IndAppRun after each accepted step r: the loading-contact error, then the
    edge and inversion warnings into warnings (printed when print is true). */

@@ -15,6 +15,7 @@ struct _p_IndSummary {
   IndOPParams    op;
   IndCurvePoint *pts; /* accepted steps */
   PetscInt       n, cap;
+  PetscInt       min_contact_nodes; /* nodes in contact at P_max, whole indent, for an Oliver-Pharr analysis */
 };
 
 /* Reads the -op_* options of the analysis (shared with indent-op), checking each. */

@@ -168,8 +168,9 @@ def run_case(name, opts, np, build, workdir, extra):
         with open(os.path.join(out, "summary.json")) as f:
             summ = json.load(f)
         row["P_max_uN"] = summ.get("P_max_uN", float("nan"))
-        row["H_GPa"] = summ.get("H_GPa", float("nan"))
-        row["E_r_GPa"] = summ.get("E_r_GPa", float("nan"))
+        # withheld (null) or absent: not a number
+        row["H_GPa"] = summ.get("H_GPa") if summ.get("H_GPa") is not None else float("nan")
+        row["E_r_GPa"] = summ.get("E_r_GPa") if summ.get("E_r_GPa") is not None else float("nan")
     except (OSError, ValueError):
         pass
     rss = []

@@ -194,6 +194,22 @@ indent_script_test(bad_never_touches_surface ${EXPECT_ERROR}
 bad_np2(bad_never_touches_axis_np2 ${EXPECT_ERROR}
   "The indenter never touches the contact surface 'top'.*-indenter_axis 5,5 nm"
   ${INDENT_NP2} ${OK_BOX} ${ELASTIC} ${SPHERE} -indenter_axis 5,5)
+# The indenter starting inside the body (issue 25): refused on 1 and 2 ranks.
+indent_script_test(bad_indenter_starts_inside ${EXPECT_ERROR} --fresh ${BAD_DIR}/inside
+  "The indenter starts inside the body: at depth 0 it reaches 0.5 nm below the contact surface 'top' \\(-indenter_surface 0.5 nm"
+  ${INDENT} ${OK_BOX} ${ELASTIC} ${SPHERE} -indenter_surface 0.5 -output_dir ${BAD_DIR}/inside)
+bad_np2(bad_indenter_starts_inside_np2 ${EXPECT_ERROR} --fresh ${BAD_DIR}/inside_paper
+  "The indenter starts inside the body: at depth 0 it reaches 10 nm below the contact surface 'top'"
+  ${INDENT_NP2} ${PAPER_COARSE} -indenter_surface -10 -output_dir ${BAD_DIR}/inside_paper)
+# A load program longer than indent.h5 can hold is refused before step 1; a field output beyond
+# -output_size_warning (or the free disk) is announced with its estimate, and the run goes on.
+bad_np2(bad_steps_beyond_field_file_np2 ${EXPECT_ERROR} --fresh ${BAD_DIR}/steps_beyond
+  "The load program has more than 100000 steps to write and indent.h5 holds at most 100000"
+  ${INDENT_NP2} ${PAPER_COARSE} -load_steps 100000 -output_fields 1 -output_dir ${BAD_DIR}/steps_beyond)
+add_test(NAME output_size_warning COMMAND ${INDENT} -dm_plex_box_faces 2,2,2 -quiet ${ELASTIC} ${SPHERE} -load_steps 20
+  -output_size_warning 1e-5 -output_dir ${BAD_DIR}/size_warning -output_overwrite)
+set_tests_properties(output_size_warning PROPERTIES ENVIRONMENT "${INDENT_TEST_ENV}" LABELS faults
+  PASS_REGULAR_EXPRESSION "indent: warning: the field output would take about [0-9.e+-]+ GB \\(up to [0-9]+ steps")
 indent_script_test(bad_depth_through_box ${EXPECT_ERROR}
   "-load_depth 2 nm goes through the body: .*the body is 1 nm thick"
   ${INDENT} ${OK_BOX} ${ELASTIC} ${SPHERE} -load_depth 2)

@@ -512,6 +512,24 @@ static PetscErrorCode CheckReach(IndContact c, IndBC bc, PetscReal depth_max)
              "z = %.6g nm)",
              (double)depth_max, (double)lowest, (double)c->zmin, (double)(ind->surface - c->zmin), c->surface,
              (double)ind->surface);
+  {
+    /* At depth 0 the indenter touches the undeformed surface at most: a start inside the body would
+       load it before the first step and report loads from a depth that is not the indentation's. */
+    IndIndenter at = *ind;
+    PetscReal   g0 = PETSC_MAX_REAL, tol = 1e-9 * PetscMax(1.0, PetscAbsReal(c->top) + PetscAbsReal(c->zmin));
+    at.depth       = 0;
+    for (PetscInt i = 0; i < c->n; ++i) {
+      PetscReal gap, nrm[3];
+      IndIndenterGap(&at, c->X + 3 * i, &gap, nrm);
+      g0 = PetscMin(g0, gap);
+    }
+    PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &g0, 1, MPIU_REAL, MPIU_MIN, c->comm));
+    PetscCheck(g0 >= -tol, c->comm, PETSC_ERR_USER_INPUT,
+               "The indenter starts inside the body: at depth 0 it reaches %.6g nm below the contact surface '%s' "
+               "(-indenter_surface %.6g nm, the surface's highest node at z = %.6g nm); give -indenter_surface at or "
+               "above the surface (its default is the highest node)",
+               (double)-g0, c->surface, (double)ind->surface, (double)c->top);
+  }
   for (PetscInt k = 0; k < bc->nspec; ++k)
     if (bc->spec[k].fn || bc->spec[k].value[0] != 0 || bc->spec[k].value[1] != 0 || bc->spec[k].value[2] != 0)
       moves = PETSC_TRUE;

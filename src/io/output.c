@@ -1,3 +1,4 @@
+#include <sys/statvfs.h>
 #include <string.h>
 #include <petscsf.h>
 #include "output_impl.h"
@@ -237,6 +238,7 @@ PetscErrorCode IndOutputCreate(IndMesh mesh, IndDisc disc, IndOutput *out)
   o->disc    = disc;
   o->enabled = PETSC_TRUE;
   o->curve   = PETSC_TRUE;
+  o->size_warning = 10;
   PetscCall(PetscStrncpy(o->dir, "output", sizeof(o->dir)));
   PetscOptionsBegin(comm, NULL, IND_TITLE "Output files", "Output");
   PetscCall(PetscOptionsGetString(NULL, NULL, "-output_dir", o->dir, sizeof(o->dir), NULL)); /* listed by rundir.c */
@@ -244,7 +246,11 @@ PetscErrorCode IndOutputCreate(IndMesh mesh, IndDisc disc, IndOutput *out)
   PetscCall(IndOptionsBool("-output_curve", "Write the load-displacement curve (CSV) of an indentation", o->curve,
     &o->curve,
                            NULL));
+  PetscCall(IndOptionsReal("-output_size_warning", "Warn before step 1 when the field output would exceed this size",
+                           "GB", NULL, o->size_warning, &o->size_warning, NULL));
   PetscOptionsEnd();
+  PetscCheck(o->size_warning >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-output_size_warning must be >= 0 (GB), got %g",
+             (double)o->size_warning);
   PetscCheck(o->dir[0], comm, PETSC_ERR_ARG_WRONG, "-output_dir must not be empty");
   PetscCall(PetscSNPrintf(o->h5name, sizeof(o->h5name), "%s/indent.h5", o->dir));
   if (o->enabled || o->curve) PetscCall(IndMakeDirectory(comm, o->dir, "-output_dir"));
@@ -271,6 +277,58 @@ PetscErrorCode IndOutputCreate(IndMesh mesh, IndDisc disc, IndOutput *out)
   PetscCall(PetscMalloc1(IND_OUTPUT_INFO * IND_MAX_OUTPUT_STEPS, &o->info));
   for (PetscInt i = 0; i < IND_OUTPUT_INFO * IND_MAX_OUTPUT_STEPS; ++i) o->info[i] = NAN;
   *out = o;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode IndOutputBytesPerStep(IndOutput o, PetscReal *bytes)
+{
+  Vec      v;
+  PetscInt nvert, ncell = o->disc->ncell;
+
+  PetscFunctionBeginUser;
+  *bytes = 0;
+  if (!o->enabled) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(DMGetGlobalVector(o->vdm, &v));
+  PetscCall(VecGetSize(v, &nvert));
+  PetscCall(DMRestoreGlobalVector(o->vdm, &v));
+  nvert /= 3;
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &ncell, 1, MPIU_INT, MPI_SUM, PetscObjectComm((PetscObject)o->vdm)));
+  /* per vertex: displacement (3), contact pressure and status (2); per cell: stress and strain (6 each),
+     von Mises, plastic strain, back stress, yielding */
+  *bytes = sizeof(PetscReal) * ((PetscReal)nvert * (o->contact ? 5 : 3) + (PetscReal)ncell * 16);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode IndOutputCheckSize(IndOutput o, PetscInt steps_left, IndWarnings *w)
+{
+  MPI_Comm    comm = PetscObjectComm((PetscObject)o->vdm);
+  PetscReal   per, total, avail = -1;
+  PetscMPIInt rank;
+  char        text[IND_WARNING_LEN];
+
+  PetscFunctionBeginUser;
+  PetscCall(IndOutputBytesPerStep(o, &per));
+  if (per == 0) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCheck(o->nsteps + steps_left <= IND_MAX_OUTPUT_STEPS, comm, PETSC_ERR_USER_INPUT,
+             "The load program has %s%" PetscInt_FMT " steps to write and indent.h5 holds at most %d: give fewer "
+             "-load_steps or -load_unload_steps, or -output_fields 0",
+             steps_left > IND_MAX_OUTPUT_STEPS ? "more than " : "", PetscMin(steps_left, (PetscInt)IND_MAX_OUTPUT_STEPS),
+             IND_MAX_OUTPUT_STEPS);
+  total = per * (PetscReal)steps_left;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  if (!rank) {
+    struct statvfs fs;
+    if (!statvfs(o->dir, &fs)) avail = (PetscReal)fs.f_bavail * (PetscReal)fs.f_frsize;
+  }
+  PetscCallMPI(MPI_Bcast(&avail, 1, MPIU_REAL, 0, comm));
+  if (total <= o->size_warning * 1e9 && (avail < 0 || total <= avail)) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(PetscSNPrintf(text, sizeof(text),
+                          "the field output would take about %.3g GB (up to %" PetscInt_FMT " steps of %.3g MB) in '%s', "
+                          "more than %s (%.3g GB); -output_fields 0 writes none, fewer -load_steps less",
+                          total / 1e9, steps_left, per / 1e6, o->dir,
+                          avail >= 0 && total > avail ? "the free space there" : "-output_size_warning",
+                          avail >= 0 && total > avail ? avail / 1e9 : (double)o->size_warning));
+  PetscCall(IndWarningsAdd(comm, w, "output_size", PETSC_TRUE, text));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -48,6 +48,14 @@ PetscErrorCode IndSummaryCreate(MPI_Comm comm, IndSummary *out)
   s->cap  = 256;
   PetscCall(PetscMalloc1(s->cap, &s->pts));
   PetscCall(IndOPParamsSetFromOptions(comm, &s->op));
+  s->min_contact_nodes = 50;
+  PetscOptionsBegin(comm, NULL, IND_TITLE "Oliver-Pharr analysis of a run", "OP");
+  PetscCall(IndOptionsInt("-op_min_contact_nodes",
+                          "Nodes in contact at P_max (whole indent) below which H and E_r are withheld", NULL,
+                          s->min_contact_nodes, &s->min_contact_nodes, NULL));
+  PetscOptionsEnd();
+  PetscCheck(s->min_contact_nodes >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "-op_min_contact_nodes must be >= 0, got %" PetscInt_FMT, s->min_contact_nodes);
   *out = s;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -146,7 +154,7 @@ PetscErrorCode IndSummaryFinish(IndSummary s, const IndIndenter *ind, const IndR
   const IndCurvePoint *pmax, *last;
   PetscInt       imax = 0, ne = 0, newton = 0, outer = 0, linear = 0, code;
   Entry          e[40];
-  char           why[256] = "";
+  char           why[512] = "";
   PetscMPIInt    rank;
 
   PetscFunctionBeginUser;
@@ -171,6 +179,11 @@ PetscErrorCode IndSummaryFinish(IndSummary s, const IndIndenter *ind, const IndR
     "fewer than 3 unloading points with P >= %g P_max: raise -load_unload_steps", (double)(1 - s->op.fraction)));
   else if (code) PetscCall(PetscSNPrintf(why, sizeof(why), "the unloading branch is not a power law"));
   else IndOPFromArea(&s->op, &r, pmax->area, &Hs, &Ers, &Es);
+  if (!code && info->contact) {
+    /* A contact of a few nodes leaves the unloading a staircase of nodes letting go: its fit is noise. */
+    IndRunCheckContactResolved(info->contact, pmax->contact, s->min_contact_nodes, why, sizeof(why));
+    if (why[0]) code = 4;
+  }
   if (!code && info->contact) {
     char text[IND_WARNING_LEN];
     PetscCall(IndRunCheckContactArea(info->contact, r.A, text, sizeof(text)));
@@ -221,7 +234,7 @@ PetscErrorCode IndSummaryFinish(IndSummary s, const IndIndenter *ind, const IndR
       else PetscCall(PetscPrintf(s->comm, "  %-58s %12.6g %s\n", e[k].label, (double)e[k].value, e[k].unit));
     }
     if (code) PetscCall(PetscPrintf(s->comm, "  no Oliver-Pharr analysis: %s\n", why));
-  }
+  } else if (code == 4) PetscCall(PetscPrintf(s->comm, "indent: warning: %s\n", why));
 
   PetscCallMPI(MPI_Comm_rank(s->comm, &rank));
   if (write && !rank) {
@@ -245,6 +258,13 @@ PetscErrorCode IndSummaryFinish(IndSummary s, const IndIndenter *ind, const IndR
     fprintf(fp, "  \"indenter\": \"%s\",\n  \"op_fraction\": %.10g,\n  \"op_epsilon\": %.10g,\n  \"op_beta\": %.10g",
       IndIndenterTypes[ind->type], (double)s->op.fraction, (double)s->op.epsilon, (double)s->op.beta);
     for (PetscInt k = 0; k < ne; ++k) fprintf(fp, ",\n  \"%s\": %.12g", e[k].key, (double)e[k].value);
+    if (code) {
+      /* the results a reader looks for are there, empty, with the reason */
+      const char *const withheld[] = {"H_GPa", "E_r_GPa", "E_GPa", "H_true_GPa", "E_r_true_GPa"};
+      for (size_t k = 0; k < sizeof(withheld) / sizeof(withheld[0]); ++k) fprintf(fp, ",\n  \"%s\": null", withheld[k]);
+      fprintf(fp, ",\n  \"op_withheld\": ");
+      JsonString(fp, why);
+    }
     fprintf(fp, "\n}\n");
     PetscCheck(fclose(fp) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Error writing '%s'", tmp);
     PetscCall(IndRenameInto(tmp, path));

@@ -164,6 +164,18 @@ void IndLoadPathAccept(IndLoadPath *lp, PetscInt its)
   } else if (its <= lp->easy_its) lp->dt = PetscMin(lp->dt * lp->growth, lp->dt_max);
 }
 
+PetscInt IndLoadPathStepsLeft(const IndLoadPath *lp, PetscInt limit)
+{
+  IndLoadPath copy = *lp;
+  PetscInt    n    = 0;
+
+  while (!IndLoadPathDone(&copy) && n < limit) {
+    IndLoadPathAccept(&copy, copy.easy_its + 1); /* not easy: no growth beyond the program's own */
+    n++;
+  }
+  return n;
+}
+
 PetscErrorCode IndLoadPathReject(IndLoadPath *lp, MPI_Comm comm, const char why[])
 {
   PetscFunctionBeginUser;

@@ -1,3 +1,4 @@
+#include <stdio.h>
 #include <string.h>
 #include "ind_runchecks.h"
 
@@ -89,6 +90,19 @@ PetscErrorCode IndRunCheckContactArea(IndContact c, PetscReal area_hc, char warn
                             "and the hardness and modulus are meaningless",
                             (double)area_hc, c->surface, (double)c->surface_area));
   PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+void IndRunCheckContactResolved(IndContact c, PetscInt nodes, PetscInt min_nodes, char why[], size_t len)
+{
+  const PetscReal whole = c->symmetry * (PetscReal)nodes;
+
+  why[0] = 0;
+  if (whole < (PetscReal)min_nodes)
+    snprintf(why, len,
+             "H and E_r withheld: at P_max %" PetscInt_FMT " nodes touch the indenter (about %.0f over the whole indent), "
+             "fewer than -op_min_contact_nodes %" PetscInt_FMT ": %.1f node spacings across the contact radius do not "
+             "resolve its area; indent deeper or refine the mesh under the tip",
+             nodes, (double)whole, min_nodes, (double)PetscSqrtReal(whole / PETSC_PI));
 }
 
 PetscErrorCode IndRunCheckStep(IndApp app, const IndStepResult *r, IndWarnings *w, PetscBool print)
