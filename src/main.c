@@ -4,6 +4,7 @@ static const char help[] = "indent: finite-element nanoindentation of elasto-pla
 
 #include <string.h>
 #include "ind_app.h"
+#include "ind_optionsfile.h"
 
 static int stopped; /* the signal that stopped the run after its checkpoint (0: none) */
 
@@ -30,11 +31,14 @@ static PetscBool HelpIntro(int argc, char **argv)
 
 int main(int argc, char **argv)
 {
-  PetscErrorCode ierr;
-  PetscBool      intro = HelpIntro(argc, argv);
+  PetscErrorCode       ierr;
+  PetscBool            intro = HelpIntro(argc, argv);
+  IndOptionsFileCopies copies;
 
+  if (IndOptionsFilesPrepare("indent", argc, argv, &copies)) return 1;
   if (!intro) IndHelpCaptureBegin();
   ierr = PetscInitialize(&argc, &argv, NULL, intro ? help : NULL);
+  IndOptionsFilesRemoveCopies(&copies);
   if (ierr) return (int)ierr;
   ierr = IndErrorSetUp("indent");
   if (!ierr) ierr = IndHelpCaptureEnd();

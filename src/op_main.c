@@ -12,6 +12,7 @@ static const char help[] = "indent-op: Oliver-Pharr analysis of a load-displacem
                            "  -indenter_type, -indenter_radius (nm), -indenter_angle (degrees): the area function "
                              "A(h_c)\n";
 
+#include "ind_optionsfile.h"
 #include <string.h>
 #include "ind_summary.h"
 #include "ind_indenter.h"
@@ -133,10 +134,13 @@ static PetscErrorCode Analyse(void)
 
 int main(int argc, char **argv)
 {
-  PetscErrorCode ierr;
+  PetscErrorCode       ierr;
+  IndOptionsFileCopies copies;
 
+  if (IndOptionsFilesPrepare("indent-op", argc, argv, &copies)) return 1;
   IndHelpCaptureBegin();
   ierr = PetscInitialize(&argc, &argv, NULL, NULL);
+  IndOptionsFilesRemoveCopies(&copies);
   if (ierr) return (int)ierr;
   ierr = IndErrorSetUp("indent-op");
   if (!ierr) ierr = IndHelpCaptureEnd();

@@ -187,6 +187,20 @@ bad_np2(bad_geo_unknown_parameter_np2 ${EXPECT_ERROR} --fresh ${BAD_DIR}/unknown
 indent_script_test(bad_geo_parameter_value ${EXPECT_ERROR} "-mesh_geo_parameters: 'abc' for 'h_tip' is not a number"
   ${INDENT} ${PAPER_COARSE} -mesh_geo_parameters h_tip=abc -output_dir ${BAD_DIR}/parameter_value)
 
+# ---- options files, checked before PETSc reads them (issue 25): one line, not PETSc's error block
+indent_script_test(bad_options_file_missing ${EXPECT_ERROR}
+  "-options_file '${BAD_DIR}/no_such.opts': No such file or directory"
+  ${INDENT} -options_file ${BAD_DIR}/no_such.opts)
+bad_np2(bad_options_file_directory_np2 ${EXPECT_ERROR}
+  "-options_file '${CMAKE_CURRENT_SOURCE_DIR}': it is a directory"
+  ${INDENT_NP2} -options_file ${CMAKE_CURRENT_SOURCE_DIR})
+# A file saved with a UTF-8 byte-order mark is read as the same file without it.
+add_test(NAME options_file_bom COMMAND sh -c "mkdir -p \"$(dirname \"$0\")\" && printf '\\357\\273\\277-dm_plex_box_faces 2,2,2\\n-quiet\\n' > \"$0\" && \"$@\""
+  ${BAD_DIR}/bom.opts ${INDENT} -options_file ${BAD_DIR}/bom.opts ${ELASTIC} -bc_fixed bottom
+  -bc_displacement top:z=-0.01 -output_fields 0 -output_dir ${BAD_DIR}/bom -output_overwrite)
+set_tests_properties(options_file_bom PROPERTIES ENVIRONMENT "${INDENT_TEST_ENV}" LABELS faults
+  FAIL_REGULAR_EXPRESSION "error|ERROR")
+
 # ---- physically meaningless runs, refused before solving
 indent_script_test(bad_never_touches_surface ${EXPECT_ERROR}
   "${RE_NEVER_TOUCHES}"
