@@ -2,7 +2,8 @@
 /* The output directory of a run and the rule that protects an earlier run's results there:
    - a fresh run refuses a directory that already holds a run's files (indent.h5, the curve, the summary,
      a checkpoint, ...) unless -output_overwrite is given, which removes those files (and only those) first;
-   - -restart <dir or checkpoint file> continues the run whose checkpoint lies in -output_dir, appending.
+   - -restart <dir or checkpoint file> continues the run whose checkpoint lies in -output_dir, appending;
+   - the run holds the directory's lock (ind_runlock.h) for its life: a live run's directory is refused.
    Decided before anything is written (the mesh module may mesh a .geo into the directory). */
 #include "ind_common.h"
 

@@ -5,6 +5,7 @@ static const char help[] = "indent: finite-element nanoindentation of elasto-pla
 #include <string.h>
 #include "ind_app.h"
 #include "ind_optionsfile.h"
+#include "ind_parentwatch.h"
 
 static int stopped; /* the signal that stopped the run after its checkpoint (0: none) */
 
@@ -36,6 +37,7 @@ int main(int argc, char **argv)
   IndOptionsFileCopies copies;
 
   if (IndOptionsFilesPrepare("indent", argc, argv, &copies)) return 1;
+  (void)IndParentWatchStart(); /* a rank left running by a killed launcher would write on unseen */
   if (!intro) IndHelpCaptureBegin();
   ierr = PetscInitialize(&argc, &argv, NULL, intro ? help : NULL);
   IndOptionsFilesRemoveCopies(&copies);

@@ -5,6 +5,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 #include "ind_rundir.h"
+#include "ind_runlock.h"
 #include "ind_files.h"
 #include "ind_options.h"
 
@@ -104,6 +105,16 @@ static PetscErrorCode RestartFile(MPI_Comm comm, const char value[], char file[]
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+static PetscErrorCode Lock(MPI_Comm comm, const char dir[], const char option[])
+{
+  char warning[2 * PETSC_MAX_PATH_LEN + 256];
+
+  PetscFunctionBeginUser;
+  PetscCall(IndRunLockTake(comm, dir, option, warning, sizeof(warning)));
+  if (warning[0]) PetscCall(PetscFPrintf(comm, PETSC_STDERR, "indent: warning: %s\n", warning));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode IndRunDirSetUp(MPI_Comm comm, PetscBool writes, IndRunDir *rd)
 {
   char        restart[PETSC_MAX_PATH_LEN] = "", found[1024];
@@ -160,9 +171,13 @@ PetscErrorCode IndRunDirSetUp(MPI_Comm comm, PetscBool writes, IndRunDir *rd)
                  restart, rd->dir);
     }
     PetscCall(PetscStrncpy(rd->restart_file, file, sizeof(rd->restart_file)));
+    PetscCall(Lock(comm, rd->dir, "-restart"));
     rd->restart = rd->ready = PETSC_TRUE;
     PetscFunctionReturn(PETSC_SUCCESS);
   }
+  /* The directory's owner first: a live run's files are neither judged nor removed. */
+  if (kind == 0) PetscCall(IndMakeDirectory(comm, rd->dir, "-output_dir"));
+  PetscCall(Lock(comm, rd->dir, rd->overwrite ? "-output_overwrite" : "-output_dir"));
   if (found[0]) {
     PetscCheck(rd->overwrite, comm, PETSC_ERR_FILE_OPEN,
                "-output_dir '%s' already holds a run (%s): give -output_overwrite to replace it, -restart %s to "
