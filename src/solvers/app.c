@@ -290,7 +290,7 @@ static PetscErrorCode Elapsed(IndApp app)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode Checkpoint(IndApp app)
+static PetscErrorCode Checkpoint(IndApp app, PetscBool stopping)
 {
   PetscLogDouble t0, t1;
 
@@ -299,7 +299,9 @@ static PetscErrorCode Checkpoint(IndApp app)
   app->checkpointed = app->path.accepted;
   PetscCall(Elapsed(app));
   PetscCall(PetscTime(&t0));
+  IndSignalsDeferBegin(); /* a second Ctrl-C must not leave half a checkpoint */
   PetscCall(IndCheckpointWrite(app, app->rundir.checkpoint));
+  IndSignalsDeferEnd(stopping);
   PetscCall(PetscTime(&t1));
   if (!app->quiet) {
     struct stat st;
@@ -332,7 +334,7 @@ static PetscErrorCode Stop(IndApp app, int signum)
   const char *name = IndSignalName(signum);
 
   PetscFunctionBeginUser;
-  PetscCall(Checkpoint(app));
+  PetscCall(Checkpoint(app, PETSC_TRUE));
   app->stopped = signum;
   if (app->rundir.ready)
     PetscCall(PetscPrintf(app->comm,
@@ -431,7 +433,7 @@ PetscErrorCode IndAppRun(IndApp app)
       t) <= lp->unload_to) IndLoadPathFinish(lp);
     if (lp->accepted == app->stop_after) IndSignalsRaise(SIGTERM);
     else if (app->checkpoint_every && lp->accepted % app->checkpoint_every == 0 && !IndLoadPathDone(lp))
-      PetscCall(Checkpoint(app));
+      PetscCall(Checkpoint(app, PETSC_FALSE));
   }
   if (app->stopped) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(Elapsed(app));

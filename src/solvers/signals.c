@@ -2,17 +2,22 @@
 #include <signal.h>
 #include "ind_signals.h"
 
-static volatile sig_atomic_t received = 0;
+static volatile sig_atomic_t received = 0, deferring = 0, deferred = 0;
 static const int             watched[] = {SIGTERM, SIGINT, SIGUSR1};
 #define NWATCHED ((int)(sizeof(watched) / sizeof(watched[0])))
 static struct sigaction previous[NWATCHED];
 static PetscBool        installed = PETSC_FALSE;
 
 /* Async-signal-safe: records the first signal; a repeated one restores the default action and
-   re-raises, so a user pressing Ctrl-C twice is not kept waiting for the step to end. */
+   re-raises, so a user pressing Ctrl-C twice is not kept waiting for the step to end, except while a
+   checkpoint is written: then it waits for the checkpoint to be whole. */
 static void OnSignal(int signum)
 {
   if (received == signum) {
+    if (deferring) {
+      deferred = signum;
+      return;
+    }
     signal(signum, SIG_DFL);
     raise(signum);
     return;
@@ -72,4 +77,21 @@ const char *IndSignalName(int signum)
 void IndSignalsRaise(int signum)
 {
   if (!received) received = signum;
+}
+
+void IndSignalsDeferBegin(void)
+{
+  deferring = 1;
+}
+
+void IndSignalsDeferEnd(PetscBool stopping)
+{
+  const int signum = (int)deferred;
+
+  deferring = 0;
+  deferred  = 0;
+  if (signum && !stopping) {
+    signal(signum, SIG_DFL);
+    raise(signum);
+  }
 }
