@@ -69,7 +69,7 @@ def digests(d):
 def main():
     ap, mine, options = indentrun.parser_and_options("check_runlock.py")
     ap.add_argument("--np", type=int, default=2)
-    ap.add_argument("--live-steps", default="400", help="-load_steps of the run that must outlive the refusals")
+    ap.add_argument("--live-steps", default="250", help="-load_steps of the run that must outlive the refusals")
     args = ap.parse_args(mine)
     shutil.rmtree(args.workdir, ignore_errors=True)
     os.makedirs(args.workdir)

@@ -3,7 +3,8 @@
 # the table of cases and messages is in doc/testing.md, "Bad input"). The checks of a running load program
 # (no contact by the end of loading, contact at the surface's edge, inverted cells, A(h_c) beyond the
 # surface) are test_run_checks' (run_checks_*).
-set(TEST_LABEL input)
+# Each is also a probe of the fault matrix (label faults, scripts/fault-matrix.py).
+set(TEST_LABEL "input;faults")
 set(EXPECT_ERROR ${CMAKE_CURRENT_SOURCE_DIR}/expect_error.sh)
 set(OK_BOX -dm_plex_box_faces 2,2,2 -output_fields 0 -quiet)
 set(INDENT $<TARGET_FILE:indent>)
@@ -198,7 +199,7 @@ bad_np2(bad_options_file_directory_np2 ${EXPECT_ERROR}
 add_test(NAME options_file_bom COMMAND sh -c "mkdir -p \"$(dirname \"$0\")\" && printf '\\357\\273\\277-dm_plex_box_faces 2,2,2\\n-quiet\\n' > \"$0\" && \"$@\""
   ${BAD_DIR}/bom.opts ${INDENT} -options_file ${BAD_DIR}/bom.opts ${ELASTIC} -bc_fixed bottom
   -bc_displacement top:z=-0.01 -output_fields 0 -output_dir ${BAD_DIR}/bom -output_overwrite)
-set_tests_properties(options_file_bom PROPERTIES ENVIRONMENT "${INDENT_TEST_ENV}" LABELS faults
+set_tests_properties(options_file_bom PROPERTIES ENVIRONMENT "${INDENT_TEST_ENV}" LABELS "input;faults"
   FAIL_REGULAR_EXPRESSION "error|ERROR")
 
 # ---- physically meaningless runs, refused before solving
@@ -222,7 +223,7 @@ bad_np2(bad_steps_beyond_field_file_np2 ${EXPECT_ERROR} --fresh ${BAD_DIR}/steps
   ${INDENT_NP2} ${PAPER_COARSE} -load_steps 100000 -output_fields 1 -output_dir ${BAD_DIR}/steps_beyond)
 add_test(NAME output_size_warning COMMAND ${INDENT} -dm_plex_box_faces 2,2,2 -quiet ${ELASTIC} ${SPHERE} -load_steps 20
   -output_size_warning 1e-5 -output_dir ${BAD_DIR}/size_warning -output_overwrite)
-set_tests_properties(output_size_warning PROPERTIES ENVIRONMENT "${INDENT_TEST_ENV}" LABELS faults
+set_tests_properties(output_size_warning PROPERTIES ENVIRONMENT "${INDENT_TEST_ENV}" LABELS "input;faults"
   PASS_REGULAR_EXPRESSION "indent: warning: the field output would take about [0-9.e+-]+ GB \\(up to [0-9]+ steps")
 indent_script_test(bad_depth_through_box ${EXPECT_ERROR}
   "-load_depth 2 nm goes through the body: .*the body is 1 nm thick"
