@@ -17,7 +17,6 @@ byte for byte as before. Then the restart from checkpoint.previous.h5, as the li
 import hashlib
 import os
 import shutil
-import subprocess
 import sys
 
 import h5py
@@ -28,24 +27,12 @@ sys.path.insert(0, HERE)
 import indentrun  # noqa: E402
 
 EXIT_CHECKPOINTED = 75
-failures = []
-
-
-def check(ok, what):
-    print(("ok   " if ok else "FAIL ") + what, flush=True)
-    if not ok:
-        failures.append(what)
-    return ok
+check = indentrun.Checks()
 
 
 def launch(args, options):
-    cmd = [args.mpiexec, "-n", str(args.np), args.indent, *options]
-    print("+", " ".join(cmd), flush=True)
-    # mpiexec's own banner about a non-zero exit is not indent's output (as in expect_error.sh)
-    env = dict(os.environ, OMPI_MCA_orte_execute_quiet="1")
-    proc = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, env=env)
-    indentrun.pass_on_unfreed(proc.stdout)
-    return proc.returncode, proc.stdout
+    status, lines = indentrun.run_quiet(args.mpiexec, args.np, args.indent, options)
+    return status, "\n".join(lines)
 
 
 def digests(d):
@@ -143,10 +130,7 @@ def main():
               f"its curve has steps 1 to {len(steps)} in order")
     else:
         print(text)
-    if failures:
-        print(f"{len(failures)} check(s) failed")
-        return 1
-    return 0
+    return check.status()
 
 
 if __name__ == "__main__":

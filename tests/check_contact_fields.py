@@ -19,14 +19,7 @@ import numpy as np
 
 import indentrun
 
-failures = []
-
-
-def check(ok, what):
-    print(("ok   " if ok else "FAIL ") + what)
-    if not ok:
-        failures.append(what)
-    return ok
+check = indentrun.Checks()
 
 
 def compare(out, label):
@@ -60,10 +53,7 @@ def main():
         os.makedirs(args.workdir, exist_ok=True)
         if check(indentrun.run(args, n, options, out, f"{n} rank(s)"), f"run on {n} rank(s)"):
             compare(out, f"{n} rank(s)")
-    if failures:
-        print(f"{len(failures)} check(s) failed")
-        return 1
-    return 0
+    return check.status()
 
 
 if __name__ == "__main__":

@@ -19,14 +19,7 @@ sys.path.insert(0, HERE)
 import indentrun  # noqa: E402
 
 KEYS = ("H_GPa", "E_r_GPa", "E_GPa", "H_true_GPa", "E_r_true_GPa")
-failures = []
-
-
-def check(ok, what):
-    print(("ok   " if ok else "FAIL ") + what, flush=True)
-    if not ok:
-        failures.append(what)
-    return ok
+check = indentrun.Checks()
 
 
 def main():
@@ -58,10 +51,7 @@ def main():
             s = json.load(f)
         check(all(isinstance(s.get(k), float) for k in KEYS) and "op_withheld" not in s,
               "with -op_min_contact_nodes 0: H and E_r reported")
-    if failures:
-        print(f"{len(failures)} check(s) failed")
-        return 1
-    return 0
+    return check.status()
 
 
 if __name__ == "__main__":

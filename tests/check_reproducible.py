@@ -22,14 +22,7 @@ import indentrun  # noqa: E402
 
 TIMES_CSV = {"seconds"}
 TIMES_JSON = {"wall_time_s", "wall_seconds", "start_time", "options"}
-failures = []
-
-
-def check(ok, what):
-    print(("ok   " if ok else "FAIL ") + what, flush=True)
-    if not ok:
-        failures.append(what)
-    return ok
+check = indentrun.Checks()
 
 
 def rows(d):
@@ -63,10 +56,7 @@ def main():
     sa, sb = (json.load(open(os.path.join(d, "summary.json"))) for d in dirs)
     diff = [k for k in sa if k not in TIMES_JSON and sa.get(k) != sb.get(k)]
     check(not diff, f"summary.json: every value equal but the times (differing: {diff[:5]})")
-    if failures:
-        print(f"{len(failures)} check(s) failed")
-        return 1
-    return 0
+    return check.status()
 
 
 if __name__ == "__main__":

@@ -27,14 +27,7 @@ sys.path.insert(0, HERE)
 import indentrun  # noqa: E402
 
 LOCK = "indent.lock"
-failures = []
-
-
-def check(ok, what):
-    print(("ok   " if ok else "FAIL ") + what, flush=True)
-    if not ok:
-        failures.append(what)
-    return ok
+check = indentrun.Checks()
 
 
 def command(args, options):
@@ -42,12 +35,7 @@ def command(args, options):
 
 
 def run(args, options):
-    cmd = command(args, options)
-    print("+", " ".join(cmd), flush=True)
-    env = dict(os.environ, OMPI_MCA_orte_execute_quiet="1")  # mpiexec's own banner is not indent's output
-    proc = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, env=env)
-    indentrun.pass_on_unfreed(proc.stdout)
-    return proc.returncode, [l for l in proc.stdout.splitlines() if l.strip()]
+    return indentrun.run_quiet(args.mpiexec, args.np, args.indent, options)
 
 
 def refused(status, lines, label, *words):
@@ -55,15 +43,6 @@ def refused(status, lines, label, *words):
     check(len(lines) == 1 and lines[0].startswith("indent: error: "), f"{label}: one error line, got {lines[:3]}")
     for w in words:
         check(bool(lines) and w in lines[0], f"{label}: the line names '{w}'")
-
-
-def digests(d):
-    out = {}
-    for name in sorted(os.listdir(d)):
-        p = os.path.join(d, name)
-        if os.path.isfile(p) and name not in (LOCK,):
-            out[name] = os.path.getsize(p)
-    return out
 
 
 def main():
@@ -162,10 +141,7 @@ def main():
         check(codes[0] == 0 and codes[1] != 0, f"one restart finished and one was refused (exits {codes})")
         loser = [r[1] for r in results if r[0] != 0]
         check(bool(loser) and "is in use by a run started" in loser[0], "the refused one says the directory is in use")
-    if failures:
-        print(f"{len(failures)} check(s) failed")
-        return 1
-    return 0
+    return check.status()
 
 
 if __name__ == "__main__":

@@ -67,6 +67,25 @@ def readable(d):
     return problems, steps
 
 
+def ranks_end(d, limit=5.0):
+    """Waits for the killed run's ranks: Open MPI puts them in process groups of their own, and they end
+    within a second of mpiexec (their parent watch); rank 0's pid is in the run's lock."""
+    try:
+        with open(os.path.join(d, "indent.lock")) as f:
+            pid = int(f.read().split()[1])
+    except (OSError, IndexError, ValueError):
+        return
+    t0 = time.time()
+    while time.time() - t0 < limit:
+        try:
+            with open(f"/proc/{pid}/stat") as f:
+                if f.read().rsplit(")", 1)[-1].split()[0] == "Z":
+                    return
+        except OSError:
+            return
+        time.sleep(0.05)
+
+
 def main():
     ap, argv, options = indentrun.parser_and_options("check_sigkill.py")
     ap.add_argument("--np", type=int, default=2)
@@ -91,6 +110,7 @@ def main():
         time.sleep(delay)
         os.killpg(proc.pid, signal.SIGKILL)
         proc.wait()
+        ranks_end(d)
         problems, steps = readable(d)
         print(f"kill {k} after {delay:6.2f} s: {steps} steps in the index, "
               f"{'checkpoint present' if os.path.exists(os.path.join(d, 'checkpoint.h5')) else 'no checkpoint'}"

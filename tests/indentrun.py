@@ -1,5 +1,6 @@
 """Shared by the test drivers that run indent: the `-- <indent options>` split and one checked run."""
 import argparse
+import os
 import re
 import subprocess
 import sys
@@ -53,3 +54,34 @@ def run_expecting(args, nranks, options, status, label):
         print(f"FAIL: {label} exited with {proc.returncode}, not {status}")
         return False
     return True
+
+
+class Checks:
+    """A driver's checks: prints "ok   what" or "FAIL what" for each, keeps the failures, and gives the
+    exit status (0, or 1 after a line counting the failures)."""
+
+    def __init__(self):
+        self.failures = []
+
+    def __call__(self, ok, what):
+        print(("ok   " if ok else "FAIL ") + what, flush=True)
+        if not ok:
+            self.failures.append(what)
+        return ok
+
+    def status(self):
+        if self.failures:
+            print(f"{len(self.failures)} check(s) failed")
+            return 1
+        return 0
+
+
+def run_quiet(mpiexec, nranks, indent, options):
+    """Runs indent on nranks with mpiexec's own banner about a non-zero exit off (it is not indent's
+    output, as in expect_error.sh); returns (exit status, non-empty lines of output)."""
+    cmd = [mpiexec, "-n", str(nranks), indent, *options]
+    print("+", " ".join(cmd), flush=True)
+    env = dict(os.environ, OMPI_MCA_orte_execute_quiet="1")
+    proc = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, env=env)
+    pass_on_unfreed(proc.stdout)
+    return proc.returncode, [line for line in proc.stdout.splitlines() if line.strip()]
