@@ -23,7 +23,8 @@ PetscErrorCode IndRunCheckContactArea(IndContact contact, PetscReal area_hc, cha
 /* Whether the contact at the largest load, nodes of the modelled part in contact, resolves the contact
    area for Oliver-Pharr: at least min_nodes over the whole indent (the modelled part times the model's
    symmetry), about sqrt(min_nodes / pi) node spacings across its radius; why says otherwise. */
-void           IndRunCheckContactResolved(IndContact contact, PetscInt nodes, PetscInt min_nodes, char why[], size_t len);
+void           IndRunCheckContactResolved(IndContact contact, PetscInt nodes, PetscInt min_nodes, char why[],
+                                          size_t len);
 
 /* All of a step's checks, for IndAppRun after each accepted step r: the loading-contact error, then the
    edge and inversion warnings into warnings (printed when print is true). */

@@ -39,7 +39,8 @@ def main():
             s = json.load(f)
         for k in KEYS:
             check(k in s and s[k] is None, f"summary.json: {k} is null (got {s.get(k, 'no key')!r})")
-        check("-op_min_contact_nodes" in s.get("op_withheld", ""), "summary.json: op_withheld names -op_min_contact_nodes")
+        check("-op_min_contact_nodes" in s.get("op_withheld", ""),
+              "summary.json: op_withheld names -op_min_contact_nodes")
         with open(os.path.join(out, "summary.txt")) as f:
             check("no Oliver-Pharr analysis: H and E_r withheld" in f.read(), "summary.txt says why")
         lines = [l for l in proc.stdout.splitlines() if l.startswith("indent: warning: H and E_r withheld")]

@@ -47,7 +47,8 @@ def main():
             return 1
     a, b = rows(dirs[0]), rows(dirs[1])
     differ = [i + 1 for i, (x, y) in enumerate(zip(a, b)) if x != y]
-    check(len(a) == len(b) and not differ, f"load_displacement.csv: {len(a)} and {len(b)} rows, differing rows {differ[:5]}")
+    check(len(a) == len(b) and not differ,
+          f"load_displacement.csv: {len(a)} and {len(b)} rows, differing rows {differ[:5]}")
     da, db = datasets(dirs[0]), datasets(dirs[1])
     check(da.keys() == db.keys(), f"indent.h5: the same {len(da)} datasets")
     bad = [n for n in da if n in db and not (da[n].shape == db[n].shape and

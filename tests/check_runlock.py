@@ -3,7 +3,8 @@
 
   check_runlock.py --mpiexec M --indent BIN --workdir D [--np N] [--live-steps S] -- <indent options>
 
- 1. while a run (of S load steps, long enough to outlive what follows) writes into a directory, a second fresh run, an -output_overwrite run and a -restart run
+ 1. while a run (of S load steps, long enough to outlive what follows) writes into a directory, a
+    second fresh run, an -output_overwrite run and a -restart run
     into it are each refused with one line 'indent: error: ... is in use by a run started ... (pid P)'
     naming the owner's pid, and the first run's files stay; the first run then finishes (exit 0) and its
     lock is gone;

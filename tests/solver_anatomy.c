@@ -187,7 +187,8 @@ static PetscErrorCode TakeApart(IndApp app, PetscInt step, PetscInt it, Vec U)
     PetscCall(MatAssemblyEnd(D, MAT_FINAL_ASSEMBLY));
   }
   PetscCall(PetscPrintf(app->comm,
-    "Newton iteration %" PetscInt_FMT " of step %" PetscInt_FMT ": %" PetscInt_FMT " dofs, contact nodes open %" PetscInt_FMT
+    "Newton iteration %" PetscInt_FMT " of step %" PetscInt_FMT ": %" PetscInt_FMT " dofs, contact nodes open %"
+    PetscInt_FMT
     ", sticking %" PetscInt_FMT ", sliding %" PetscInt_FMT ", %" PetscInt_FMT " yielding points\n\n", it, step, n,
     counts[0], counts[1], counts[2], s->nplastic));
   PetscCall(PetscPrintf(app->comm, "| %-44s | %-5s | %4s | %-26s | %6s | %6s |\n|---|---|---|---|---|---|\n", "system",
@@ -234,7 +235,8 @@ int main(int argc, char **argv)
   PetscCall(PetscInitialize(&argc, &argv, NULL, help));
   PetscOptionsBegin(PETSC_COMM_WORLD, NULL, "Solver anatomy", NULL);
   PetscCall(PetscOptionsInt("-anatomy_step", "Load step (1: the first)", NULL, an.step, &an.step, NULL));
-  PetscCall(PetscOptionsInt("-anatomy_newton", "Its Newton iteration (0: the first)", NULL, an.newton, &an.newton, NULL));
+  PetscCall(
+    PetscOptionsInt("-anatomy_newton", "Its Newton iteration (0: the first)", NULL, an.newton, &an.newton, NULL));
   PetscOptionsEnd();
   {
     /* the variants' KSP and PC options are read only when they are solved: not unused for the run's check */

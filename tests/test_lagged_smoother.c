@@ -1,4 +1,5 @@
-static const char help[] = "A multigrid preconditioner reused after its matrix changed in place stays a preconditioner of the\n"
+static const char help[] =
+  "A multigrid preconditioner reused after its matrix changed in place stays a preconditioner of the\n"
                            "new matrix once its finest smoother is refreshed (IndSolverRefreshFineSmoother).\n";
 
 #include "ind_app.h"

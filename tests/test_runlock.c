@@ -17,7 +17,8 @@ int main(int argc, char **argv)
 
   PetscCall(PetscInitialize(&argc, &argv, NULL, help));
   IndRunLockParse("pid 4242 host nodeA job 77 started 2026-11-26T04:00:00Z\n", &o);
-  Expect(o.pid == 4242 && !strcmp(o.host, "nodeA") && !strcmp(o.job, "77") && !strcmp(o.started, "2026-11-26T04:00:00Z"),
+  Expect(o.pid == 4242 && !strcmp(o.host, "nodeA") && !strcmp(o.job, "77") &&
+           !strcmp(o.started, "2026-11-26T04:00:00Z"),
          "a lock's text parsed into pid, host, job and start");
   Expect(IndRunLockJudge(&o, "nodeA", "-", PETSC_TRUE) == IND_RUNLOCK_LIVE, "same host, process running: live");
   Expect(IndRunLockJudge(&o, "nodeA", "-", PETSC_FALSE) == IND_RUNLOCK_STALE, "same host, process gone: stale");

@@ -1,4 +1,5 @@
-static const char help[] = "Unit test: a repeated stop signal during a checkpoint's write waits for its end (signals.c).\n";
+static const char help[] =
+  "Unit test: a repeated stop signal during a checkpoint's write waits for its end (signals.c).\n";
 
 #include <signal.h>
 #include <sys/wait.h>

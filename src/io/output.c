@@ -312,7 +312,8 @@ PetscErrorCode IndOutputCheckSize(IndOutput o, PetscInt steps_left, IndWarnings 
   PetscCheck(o->nsteps + steps_left <= IND_MAX_OUTPUT_STEPS, comm, PETSC_ERR_USER_INPUT,
              "The load program has %s%" PetscInt_FMT " steps to write and indent.h5 holds at most %d: give fewer "
              "-load_steps or -load_unload_steps, or -output_fields 0",
-             steps_left > IND_MAX_OUTPUT_STEPS ? "more than " : "", PetscMin(steps_left, (PetscInt)IND_MAX_OUTPUT_STEPS),
+             steps_left > IND_MAX_OUTPUT_STEPS ? "more than " : "",
+             PetscMin(steps_left, (PetscInt)IND_MAX_OUTPUT_STEPS),
              IND_MAX_OUTPUT_STEPS);
   total = per * (PetscReal)steps_left;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
@@ -323,7 +324,8 @@ PetscErrorCode IndOutputCheckSize(IndOutput o, PetscInt steps_left, IndWarnings 
   PetscCallMPI(MPI_Bcast(&avail, 1, MPIU_REAL, 0, comm));
   if (total <= o->size_warning * 1e9 && (avail < 0 || total <= avail)) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(PetscSNPrintf(text, sizeof(text),
-                          "the field output would take about %.3g GB (up to %" PetscInt_FMT " steps of %.3g MB) in '%s', "
+                          "the field output would take about %.3g GB (up to %" PetscInt_FMT
+                          " steps of %.3g MB) in '%s', "
                           "more than %s (%.3g GB); -output_fields 0 writes none, fewer -load_steps less",
                           total / 1e9, steps_left, per / 1e6, o->dir,
                           avail >= 0 && total > avail ? "the free space there" : "-output_size_warning",

@@ -120,7 +120,8 @@ static void Take(const char dir[], char why[], size_t wlen, char warning[], size
                path);
       return;
     case IND_RUNLOCK_STALE:
-      snprintf(warning, len, "took over the lock of a run that is no longer running (started %s on %s, pid %ld) in '%s'",
+      snprintf(warning, len,
+               "took over the lock of a run that is no longer running (started %s on %s, pid %ld) in '%s'",
                o.started, o.host, o.pid, dir);
       (void)unlink(path);
       break;

@@ -107,7 +107,8 @@ PetscErrorCode IndAppCreate(MPI_Comm comm, IndApp *out)
     PetscCall(IndOutputResume(app->output, sum ? sum->n : 0, sum ? sum->pts : NULL));
   }
 
-  PetscCall(IndOutputCheckSize(app->output, IndLoadPathStepsLeft(&app->path, IND_MAX_OUTPUT_STEPS + 1), &app->warnings));
+  PetscCall(
+    IndOutputCheckSize(app->output, IndLoadPathStepsLeft(&app->path, IND_MAX_OUTPUT_STEPS + 1), &app->warnings));
   PetscCall(VecGetSize(app->U, &ndof));
   ncell = app->disc->ncell;
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &ncell, 1, MPIU_INT, MPI_SUM, comm));

@@ -99,7 +99,8 @@ void IndRunCheckContactResolved(IndContact c, PetscInt nodes, PetscInt min_nodes
   why[0] = 0;
   if (whole < (PetscReal)min_nodes)
     snprintf(why, len,
-             "H and E_r withheld: at P_max %" PetscInt_FMT " nodes touch the indenter (about %.0f over the whole indent), "
+             "H and E_r withheld: at P_max %" PetscInt_FMT " nodes touch the indenter (about %.0f over the whole "
+             "indent), "
              "fewer than -op_min_contact_nodes %" PetscInt_FMT ": %.1f node spacings across the contact radius do not "
              "resolve its area; indent deeper or refine the mesh under the tip",
              nodes, (double)whole, min_nodes, (double)PetscSqrtReal(whole / PETSC_PI));
