@@ -19,3 +19,5 @@ void           IndSignalsRaise(int signum);
    the run is stopping anyway (it then exits as after the first signal). */
 void           IndSignalsDeferBegin(void);
 void           IndSignalsDeferEnd(PetscBool stopping);
+/* Async-signal-safe, any thread: the stop signal received so far (0: none). */
+int            IndSignalsReceived(void);

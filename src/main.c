@@ -8,6 +8,7 @@ static const char help[] = "indent: finite-element nanoindentation of elasto-pla
 #include "ind_app.h"
 #include "ind_optionsfile.h"
 #include "ind_parentwatch.h"
+#include "ind_signals.h"
 
 static int stopped; /* the signal that stopped the run after its checkpoint (0: none) */
 
@@ -39,7 +40,8 @@ int main(int argc, char **argv)
   IndOptionsFileCopies copies;
 
   if (IndOptionsFilesPrepare("indent", argc, argv, &copies)) return 1;
-  (void)IndParentWatchStart(); /* a rank left running by a killed launcher would write on unseen */
+  /* a rank left running by a killed launcher would write on unseen */
+  (void)IndParentWatchStart(IndSignalsReceived);
   /* PT-Scotch (the default partitioner) runs threads whose race draws a different partition each run,
      and the answer then differs in its last digits: one thread, unless the user asks otherwise. */
   (void)setenv("SCOTCH_PTHREAD_NUMBER", "1", 0);

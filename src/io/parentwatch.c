@@ -7,10 +7,12 @@
 #include "ind_parentwatch.h"
 
 static pid_t parent;
+static int (*stopping)(void); /* nonzero once a stop signal came: the rank is finishing its checkpoint */
 
 /* Every half second: a launcher that is gone (SIGKILL to mpiexec, a lost node daemon) leaves this rank
    orphaned, and its parent changes; the rank then ends as the job did, at once and without a word
-   (a killed job writes nothing more). */
+   (a killed job writes nothing more). A launcher that forwarded a stop signal before it went (SIGTERM
+   to mpiexec) leaves the rank to finish its checkpoint and exit. */
 static void *Watch(void *unused)
 {
   const struct timespec half = {0, 500000000L};
@@ -18,7 +20,7 @@ static void *Watch(void *unused)
   (void)unused;
   for (;;) {
     nanosleep(&half, NULL);
-    if (getppid() != parent) kill(getpid(), SIGKILL);
+    if (getppid() != parent && !(stopping && stopping())) kill(getpid(), SIGKILL);
   }
   return NULL;
 }
@@ -33,14 +35,15 @@ static int Launched(void)
   return 0;
 }
 
-int IndParentWatchStart(void)
+int IndParentWatchStart(int (*stop_requested)(void))
 {
   pthread_t      thread;
   pthread_attr_t attr;
   int            err;
 
   if (!Launched()) return 0;
-  parent = getppid();
+  stopping = stop_requested;
+  parent   = getppid();
   if (parent <= 1) return 0; /* already orphaned, or a launcher that is init itself: nothing to watch */
   pthread_attr_init(&attr);
   pthread_attr_setdetachstate(&attr, PTHREAD_CREATE_DETACHED);

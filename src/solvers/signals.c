@@ -95,3 +95,8 @@ void IndSignalsDeferEnd(PetscBool stopping)
     raise(signum);
   }
 }
+
+int IndSignalsReceived(void)
+{
+  return (int)received;
+}
