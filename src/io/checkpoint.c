@@ -329,7 +329,6 @@ PetscErrorCode IndCheckpointWrite(IndApp app, const char path[])
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-
 static PetscErrorCode RestoreNodes(IndApp app, const Nodes *nd, const PetscReal *vals)
 {
   PetscScalar *u, *du;

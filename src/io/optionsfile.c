@@ -60,7 +60,8 @@ static int CopyWithoutBOM(const char path[], char copy[], size_t len, char why[]
   size_t      n;
   int         fd;
 
-  snprintf(copy, len, "%s/indent-options-XXXXXX", dir && dir[0] ? dir : "/tmp");
+  /* the six trailing characters are mkstemp's template, which it replaces by a unique name */
+  snprintf(copy, len, "%s/indent-options-%s", dir && dir[0] ? dir : "/tmp", "XXXXXX");
   fd = mkstemp(copy);
   if (fd < 0) {
     snprintf(why, wlen, "it starts with a byte-order mark, and no copy without it could be made: %s", strerror(errno));

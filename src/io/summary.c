@@ -184,7 +184,7 @@ PetscErrorCode IndSummaryFinish(IndSummary s, const IndIndenter *ind, const IndR
     IndRunCheckContactResolved(info->contact, pmax->contact, s->min_contact_nodes, why, sizeof(why));
     if (why[0]) code = 4;
   }
-  if (!code && info->contact) {
+  if (!code && info->contact) { /* resolved: does A(h_c) fit on the modelled surface? */
     char text[IND_WARNING_LEN];
     PetscCall(IndRunCheckContactArea(info->contact, r.A, text, sizeof(text)));
     if (text[0]) PetscCall(IndWarningsAdd(s->comm, info->warnings, "op_area", print, text));
