@@ -59,8 +59,7 @@ struct _p_IndApp {
   PetscReal    dslide_last;  /* its slide (scratch) increment, nm */
   PetscReal    load_last;    /* load control: the load of the last accepted step, uN */
   PetscReal    slope_last;   /* load control: its dP/dh, uN/nm (0: unknown) */
-  PetscReal    depth_trial;  /* load control: the depth of the step being tried (-1: from the load program) */
-  PetscBool    defer_commit; /* load control: IndAppSolveStep leaves a converged trial uncommitted */
+  PetscReal    depth_trial;  /* load control: the depth the step's Newton iteration starts from (-1: none) */
   IndPredictor predictor;
   IndLoadPath  path;
   IndScratch   scratch;

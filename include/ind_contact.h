@@ -91,11 +91,25 @@ PetscErrorCode IndContactSetUp(IndContact contact, IndBC bc, Mat K, PetscReal de
    point, F -= frozen reactions; newton, the contact nodes' rows become the complementarity function. */
 PetscErrorCode IndContactResidual(IndContact contact, Vec U, Vec F);
 /* Newton: replaces the contact nodes' rows of the assembled J by the derivative of the
-   complementarity function at U, which must be the last residual's displacement. */
-PetscErrorCode IndContactJacobian(IndContact contact, Vec U, Mat J);
+   complementarity function at U, which must be the last residual's displacement. Fd (NULL: not
+   wanted; else zeroed by the caller) receives the derivative of the residual in the indenter's depth:
+   a node's force depends on u_z + depth alone (the gap and the slip see the indenter's motion as the
+   node's), so it is the z column of the node's stiffness. */
+PetscErrorCode IndContactJacobian(IndContact contact, Vec U, Mat J, Vec Fd);
 /* The semi-smooth Newton strategy (contact_newton.c). */
 PetscErrorCode IndContactNewtonResidual(IndContact contact, Vec U, Vec F);
-PetscErrorCode IndContactNewtonJacobian(IndContact contact, Vec U, Mat J);
+PetscErrorCode IndContactNewtonJacobian(IndContact contact, Vec U, Mat J, Vec Fd);
+/* Load control with the Newton variant. The load the body carries at the last residual's displacement,
+   nN of the modelled part (not times the symmetry factor): minus the z rows of the residual without
+   contact summed over the contact nodes whose z is free, which at convergence is the indenter's load. */
+PetscErrorCode IndContactModelLoad(IndContact contact, PetscReal *load);
+/* e = 1 on the z rows that IndContactModelLoad sums, 0 elsewhere (global vector): the load's
+   derivative in U is -K^T e, K the tangent without contact. */
+PetscErrorCode IndContactLoadRows(IndContact contact, Vec e);
+/* The smallest gap (nm) between the indenter at its current depth and the contact nodes at U, all ranks. */
+PetscErrorCode IndContactSmallestGap(IndContact contact, Vec U, PetscReal *gap);
+PetscReal      IndContactGetDepth(IndContact contact);
+PetscErrorCode IndContactSetDepth(IndContact contact, PetscReal depth);
 /* Whether the multipliers are those of a residual at U (on every rank). */
 PetscErrorCode IndContactNewtonCurrent(IndContact contact, Vec U, PetscBool *current);
 /* Its rows for one node, pure: K the node's 3 rows of the tangent (3 x ncols, row-major), diag the

@@ -16,6 +16,9 @@ typedef struct {
   char                why[256];             /* why it failed */
 } IndSolveResult;
 
+/* Load control's bordered Newton (bordered.c): the indenter's depth is an unknown beside U. */
+typedef struct _p_IndBordered *IndBordered;
+
 typedef struct _p_IndSolver *IndSolver;
 struct _p_IndSolver {
   DM           dm;
@@ -32,6 +35,7 @@ struct _p_IndSolver {
   PetscReal    fmin;        /* smallest residual norm of the current Newton solve */
   PetscInt     itmin;       /* its iteration */
   PetscBool    stalled;     /* the last Newton solve was stopped by the stall test */
+  IndBordered  border;      /* load control (NULL: depth control) */
 };
 
 /* depth_max sets the contact loop's penetration tolerance. */
@@ -51,6 +55,16 @@ PetscErrorCode IndSolverEvaluate(IndSolver solver, Vec U);
 PetscErrorCode IndSolverCommit(IndSolver solver, Vec U);
 /* Solves for U at the given load factor (and the indenter's current depth); U holds the initial guess. */
 PetscErrorCode IndSolverSolve(IndSolver solver, PetscReal load_factor, Vec U, IndSolveResult *result);
+/* Load control: from now on the indenter's depth is an unknown of Newton's, with the load equation
+   P(U) = P* beside the equilibrium (a bordered system: one more Krylov solve with the same operator per
+   Newton iteration). depth_max (nm) bounds the depth; load_tol (nN, whole model) is the |P - P*|
+   accepted. Needs the Newton contact variant. */
+PetscErrorCode IndSolverSetLoadControl(IndSolver solver, PetscReal depth_max, PetscReal load_tol);
+/* The load P* (nN, whole model) of the steps solved from now on. */
+PetscErrorCode IndSolverSetLoadTarget(IndSolver solver, PetscReal load);
+/* Whether the last failed solve ended at the largest depth with a load short of its target, and that
+   load (nN, whole model). */
+PetscBool      IndSolverLoadOutOfReach(IndSolver solver, PetscReal *load);
 /* Makes the finest smoother of a multigrid preconditioner (PCMG, PCGAMG; nothing for other types or
    before the first setup) set itself up again on its operator at its next use: after the operator
    changed in place while the preconditioner is reused, as on lagged Newton iterations. */

@@ -3,7 +3,9 @@
 load is reached, and the curve is the depth-controlled one: with --depth-reference D, a depth-controlled
 run to D sets the largest load and the load-controlled run must reach it at depth D; with --hertz E*,R
 every point lies on Hertz's curve; with --restart-after K, a run stopped after step K and continued
-with -restart gives the same curve.
+with -restart gives the same curve; with --unload-to-zero, the unloading ends at zero force; with
+--newton-ratio R, a depth-controlled run to the depth where the load-controlled one reached F takes at
+least 1/R of its Newton iterations per step.
 
   check_load_control.py --mpiexec M --indent BIN --workdir D [--np 2] (--depth-reference D | --force F --limit L)
                         [--rtol 1e-6] [--hertz ESTAR,R,TOL] [--restart-after K] -- <indent options>
@@ -32,6 +34,8 @@ def main():
     ap.add_argument("--rtol", type=float, default=1e-6)
     ap.add_argument("--hertz")
     ap.add_argument("--restart-after", type=int)
+    ap.add_argument("--unload-to-zero", action="store_true")
+    ap.add_argument("--newton-ratio", type=float)
     args = ap.parse_args(argv)
     shutil.rmtree(args.workdir, ignore_errors=True)
     failed = 0
@@ -67,6 +71,20 @@ def main():
         rel = np.max(np.abs(p / hertz - 1))
         print(f"  loading points vs Hertz: max relative difference {rel:.3e} (tolerance {tol:g})")
         failed += rel > tol
+    if args.unload_to_zero:
+        end = c["load_uN"][-1]
+        print(f"  unloading ends at {end:.3e} uN at depth {c['depth_nm'][-1]:.6g} nm, t = {c['t'][-1]:.6g}")
+        failed += abs(end) > args.rtol * force or c["t"][-1] < 2 - 1e-9
+    if args.newton_ratio:
+        ref = os.path.join(args.workdir, "depth_same")
+        dc_opts = options + ["-load_depth", repr(float(c["depth_nm"][top]))]
+        if not indentrun.run(args, args.np, dc_opts, ref, "depth control to the same depth"):
+            return 1
+        d = curve(ref)
+        per_load, per_depth = np.mean(c["newton"]), np.mean(d["newton"])
+        print(f"  Newton iterations per step: load control {per_load:.2f} ({len(c)} steps), depth control "
+              f"{per_depth:.2f} ({len(d)} steps); ratio {per_load / per_depth:.2f} (at most {args.newton_ratio:g})")
+        failed += per_load > args.newton_ratio * per_depth
     if args.restart_after:
         part = os.path.join(args.workdir, "restarted")
         stop = ["-checkpoint_stop_after_step", str(args.restart_after), "-output_dir", part, "-output_overwrite"]

@@ -37,7 +37,7 @@ static PetscErrorCode Tangent(IndApp app, IndTangent tangent, PetscBool contact,
   a->tangent = tangent;
   PetscCall(IndAssemblyJacobian(a, app->solver->Uloc, K));
   a->tangent = keep;
-  if (contact && app->contact) PetscCall(IndContactJacobian(app->contact, app->solver->Ubc, K));
+  if (contact && app->contact) PetscCall(IndContactJacobian(app->contact, app->solver->Ubc, K, NULL));
   PetscCall(IndBCApplyJacobian(app->bc, K));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

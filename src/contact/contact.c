@@ -599,10 +599,10 @@ PetscErrorCode IndContactResidual(IndContact c, Vec U, Vec F)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode IndContactJacobian(IndContact c, Vec U, Mat J)
+PetscErrorCode IndContactJacobian(IndContact c, Vec U, Mat J, Vec Fd)
 {
   PetscFunctionBeginUser;
-  if (c->variant == IND_UZAWA_NEWTON) PetscCall(IndContactNewtonJacobian(c, U, J));
+  if (c->variant == IND_UZAWA_NEWTON) PetscCall(IndContactNewtonJacobian(c, U, J, Fd));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -735,6 +735,35 @@ PetscErrorCode IndContactSetIndenterPosition(IndContact c, PetscReal depth, cons
   c->indenter.depth   = depth;
   c->indenter.axis[0] = axis[0];
   c->indenter.axis[1] = axis[1];
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscReal IndContactGetDepth(IndContact c)
+{
+  return c->indenter.depth;
+}
+
+PetscErrorCode IndContactSetDepth(IndContact c, PetscReal depth)
+{
+  PetscFunctionBeginUser;
+  c->indenter.depth = depth;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode IndContactSmallestGap(IndContact c, Vec U, PetscReal *gap)
+{
+  const PetscScalar *u;
+  PetscReal          g = PETSC_MAX_REAL;
+
+  PetscFunctionBeginUser;
+  PetscCall(VecGetArrayRead(U, &u));
+  for (PetscInt i = 0; i < c->n; ++i) {
+    IndContactNode ns;
+    IndContactNodeSolve(c, i, u + c->row[i], Multiplier(c, i), &ns);
+    g = PetscMin(g, ns.gap);
+  }
+  PetscCall(VecRestoreArrayRead(U, &u));
+  PetscCallMPI(MPI_Allreduce(&g, gap, 1, MPIU_REAL, MPIU_MIN, c->comm));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

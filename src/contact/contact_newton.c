@@ -89,9 +89,36 @@ static void Projector(const IndContactNode *ns, PetscReal P[9])
     }
 }
 
-PetscErrorCode IndContactNewtonJacobian(IndContact c, Vec U, Mat J)
+PetscErrorCode IndContactModelLoad(IndContact c, PetscReal *load)
+{
+  PetscReal sum = 0;
+
+  PetscFunctionBeginUser;
+  PetscCheck(c->variant == IND_UZAWA_NEWTON, c->comm, PETSC_ERR_SUP,
+             "The load of the residual needs -contact_uzawa newton");
+  for (PetscInt i = 0; i < c->n; ++i)
+    if (!(c->fixed[i] & 4)) sum -= c->L[3 * i + 2];
+  PetscCallMPI(MPI_Allreduce(&sum, load, 1, MPIU_REAL, MPIU_SUM, c->comm));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode IndContactLoadRows(IndContact c, Vec e)
+{
+  PetscScalar *v;
+
+  PetscFunctionBeginUser;
+  PetscCall(VecZeroEntries(e));
+  PetscCall(VecGetArray(e, &v));
+  for (PetscInt i = 0; i < c->n; ++i)
+    if (!(c->fixed[i] & 4)) v[c->row[i] + 2] = 1.0;
+  PetscCall(VecRestoreArray(e, &v));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode IndContactNewtonJacobian(IndContact c, Vec U, Mat J, Vec Fd)
 {
   const PetscScalar *u;
+  PetscScalar       *fd = NULL;
   PetscInt           nact = 0, cap = 0, used = 0;
   PetscInt          *node, *start, *len, *cols = NULL;
   PetscReal         *vals = NULL, K[3 * 1024];
@@ -100,6 +127,7 @@ PetscErrorCode IndContactNewtonJacobian(IndContact c, Vec U, Mat J)
   PetscCall(PetscLogEventBegin(IndLog.contact, 0, 0, 0, 0));
   PetscCall(PetscMalloc3(c->n, &node, c->n, &start, c->n, &len));
   PetscCall(VecGetArrayRead(U, &u));
+  if (Fd) PetscCall(VecGetArray(Fd, &fd));
   PetscCheck(LocalCurrent(c, u), PETSC_COMM_SELF, PETSC_ERR_PLIB,
              "Contact Jacobian at a displacement other than the last residual's (see IndContactNewtonCurrent)");
   /* All rows are read before any is written: the matrix must stay assembled for MatGetRow. */
@@ -114,6 +142,9 @@ PetscErrorCode IndContactNewtonJacobian(IndContact c, Vec U, Mat J)
     if (ns.status == IND_CONTACT_OPEN) continue; /* D = 0: the equilibrium rows stand */
     Projector(&ns, P);
     (void)IndContactNodeStiffness(c, i, u + c->row[i], c->L + 3 * i, B);
+    if (fd) /* F_i = L - f(u + depth e_z): dF_i/d depth = -df/du_z = B e_z */
+      for (int a = 0; a < 3; ++a)
+        if (!(c->fixed[i] & (1 << a))) fd[c->row[i] + a] = B[3 * a + 2];
     /* The three rows of a node share their columns (every component of a node couples to every
        component of its neighbours). */
     for (int a = 0; a < 3; ++a) {
@@ -157,6 +188,7 @@ PetscErrorCode IndContactNewtonJacobian(IndContact c, Vec U, Mat J)
     used += ncols;
   }
   PetscCall(VecRestoreArrayRead(U, &u));
+  if (Fd) PetscCall(VecRestoreArray(Fd, &fd));
   for (PetscInt k = 0; k < nact; ++k) {
     const PetscInt rows[3] = {c->grow[node[k]], c->grow[node[k]] + 1, c->grow[node[k]] + 2};
     PetscCall(MatSetValues(J, 3, rows, len[k], cols + start[k], vals + 3 * start[k], INSERT_VALUES));

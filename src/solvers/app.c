@@ -8,7 +8,6 @@
 #include "ind_signals.h"
 #include "ind_runchecks.h"
 #include "ind_options.h"
-#include "ind_forcesearch.h"
 #include "ind_csm.h"
 #include "ind_stepcsv.h"
 
@@ -89,6 +88,9 @@ PetscErrorCode IndAppCreate(MPI_Comm comm, IndApp *out)
   if (app->contact)
     PetscCall(IndContactSetCurrentAreas(app->contact, app->assembly->formulation == IND_FORMULATION_FINITE));
   PetscCall(IndSolverCreate(app->disc->dm, app->assembly, app->bc, app->contact, app->path.depth_max, &app->solver));
+  if (app->path.force_max > 0)
+    PetscCall(
+      IndSolverSetLoadControl(app->solver, app->path.depth_max, app->path.force_rtol * app->path.force_max * 1e3));
   PetscCall(IndOutputCreate(app->mesh, app->disc, &app->output));
   PetscCall(IndOutputSetContact(app->output, app->contact));
   if (app->contact) PetscCall(IndSummaryCreate(comm, &app->summary));
@@ -158,6 +160,11 @@ static PetscErrorCode AcceptStep(IndApp app, PetscReal lambda_old, IndStepResult
   PetscFunctionBeginUser;
   PetscCall(IndSolverCommit(app->solver, app->U));
   r->plastic = app->solver->nplastic;
+  if (app->path.force_max > 0) { /* load control: the next step's depth predictor */
+    const PetscReal load = r->contact.load * 1e-3, dd = r->depth - app->contact->depth_c;
+    if (dd != 0 && (load - app->load_last) / dd > 0) app->slope_last = (load - app->load_last) / dd;
+    app->load_last = load;
+  }
   if (app->contact) {
     app->ddepth_last = r->depth - app->contact->depth_c;
     app->dslide_last = r->slide - SlideAt(app, app->path.t);
@@ -168,56 +175,30 @@ static PetscErrorCode AcceptStep(IndApp app, PetscReal lambda_old, IndStepResult
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Load control: the depth at which the step's load is P* = lambda(t) -load_force, by the bracketed
-   secant of forcesearch.c, each depth tried from the accepted state; the one found is accepted. */
+/* Load control: the depth is an unknown of the step's Newton iteration (bordered.c), which starts from
+   the depth that the last step's dP/dh predicts for P* (at first, the load program's share of
+   -load_depth; in a slide, the accepted depth). */
 static PetscErrorCode SolveLoadStep(IndApp app, PetscReal t, IndStepResult *r)
 {
-  IndLoadPath    *lp         = &app->path;
-  const PetscReal lambda_old = IndLoadPathFactor(lp, lp->t), lambda = IndLoadPathFactor(lp, t);
-  const PetscReal target     = lp->force_max * (IndLoadPathUnloading(lp, t) ? PetscMax(lambda, lp->unload_to) : lambda);
-  const PetscInt  max_depths = 40;
-  IndForceSearch  fs;
-  PetscInt        newton = 0, linear = 0, outer = 0;
-  PetscLogDouble  seconds = 0;
-  int             found = 0;
+  IndLoadPath    *lp     = &app->path;
+  const PetscReal lambda = IndLoadPathFactor(lp, t);
+  const PetscReal target = lp->force_max * (IndLoadPathUnloading(lp, t) ? PetscMax(lambda, lp->unload_to) : lambda);
+  const PetscReal d_c    = app->contact->depth_c;
+  PetscReal       d0     = d_c, load = 0;
 
   PetscFunctionBeginUser;
-  /* A slide changes the load at the accepted depth: the search starts by evaluating it there. */
-  IndForceSearchStart(&fs, target, lp->force_rtol * lp->force_max, lp->depth_max, app->contact->depth_c,
-    SlideAt(app, t) > SlideAt(app, lp->t) ? -1.0 : app->load_last);
-  app->defer_commit = PETSC_TRUE;
-  for (PetscInt k = 0; k < max_depths && !found; ++k) {
-    app->depth_trial = IndForceSearchNext(&fs, app->slope_last, lp->depth_max * lambda);
-    PetscCall(IndAppSolveStep(app, t, r));
-    newton += r->newton, linear += r->linear, outer += r->outer, seconds += r->seconds;
-    if (!r->converged) break; /* the step is cut back */
-    found = IndForceSearchUpdate(&fs, r->depth, r->contact.load * 1e-3);
-    PetscCheck(found != -1, app->comm, PETSC_ERR_USER_INPUT,
-               "-load_force %g uN is out of reach: at -load_depth %g nm, the largest depth allowed, the load is %g "
-                 "uN; raise -load_depth "
-               "(within the body) or lower -load_force", (double)lp->force_max, (double)lp->depth_max,
-                 (double)(r->contact.load * 1e-3));
-    if (!found) { /* try another depth from the accepted state */
-      PetscCall(VecCopy(app->Uprev, app->U));
-      PetscCall(IndContactRollback(app->contact));
-    }
+  if (SlideAt(app, t) == SlideAt(app, lp->t)) {
+    if (app->slope_last > 0) d0 = d_c + (target - app->load_last) / app->slope_last;
+    else if (lp->accepted == 0) d0 = lp->depth_max * lambda;
   }
-  app->defer_commit = PETSC_FALSE;
-  app->depth_trial  = -1;
-  if (r->converged && !found) {
-    r->converged = PETSC_FALSE;
-    PetscCall(PetscSNPrintf(r->why, sizeof(r->why),
-      "load control: no depth gave %g uN within %g in %" PetscInt_FMT " tries",
-                            (double)target, (double)(lp->force_rtol * lp->force_max), max_depths));
-  }
-  if (found) {
-    const PetscReal load = r->contact.load * 1e-3;
-    const PetscReal dd   = r->depth - app->contact->depth_c;
-    if (dd != 0) app->slope_last = (load - app->load_last) / dd;
-    app->load_last = load;
-    PetscCall(AcceptStep(app, lambda_old, r));
-  }
-  r->newton = newton, r->linear = linear, r->outer = outer, r->seconds = seconds;
+  app->depth_trial = PetscMin(PetscMax(d0, 0.0), lp->depth_max);
+  PetscCall(IndSolverSetLoadTarget(app->solver, target * 1e3));
+  PetscCall(IndAppSolveStep(app, t, r));
+  app->depth_trial = -1;
+  PetscCheck(r->converged || !IndSolverLoadOutOfReach(app->solver, &load), app->comm, PETSC_ERR_USER_INPUT,
+             "-load_force %g uN is out of reach: at -load_depth %g nm, the largest depth allowed, the load is %g uN; "
+             "raise -load_depth (within the body) or lower -load_force",
+             (double)lp->force_max, (double)lp->depth_max, (double)(load * 1e-3));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -261,6 +242,7 @@ PetscErrorCode IndAppSolveStep(IndApp app, PetscReal t, IndStepResult *r)
     PetscCall(VecAXPY(app->U, (r->lambda - lambda_old) / app->dlambda_last, app->dU));
   else if (app->predictor != IND_PREDICTOR_NONE) PetscCall(IndSolverPredict(s, lambda_old, r->lambda, app->U));
   PetscCall(IndSolverSolve(s, r->lambda, app->U, &sr));
+  if (app->path.force_max > 0) r->depth = IndContactGetDepth(app->contact); /* an unknown of the solve */
   r->reason    = sr.reason;
   r->newton    = sr.newton;
   r->linear    = sr.linear;
@@ -270,7 +252,7 @@ PetscErrorCode IndAppSolveStep(IndApp app, PetscReal t, IndStepResult *r)
   r->converged = sr.converged;
   PetscCall(PetscStrncpy(r->why, sr.why, sizeof(r->why)));
   if (r->converged) {
-    if (!app->defer_commit) PetscCall(AcceptStep(app, lambda_old, r));
+    PetscCall(AcceptStep(app, lambda_old, r));
   } else {
     PetscCall(VecCopy(app->Uprev, app->U));
     if (app->contact) PetscCall(IndContactRollback(app->contact));

@@ -1,5 +1,6 @@
 #include "ind_solver.h"
 #include "ind_options.h"
+#include "bordered.h"
 
 /* The free rows see the prescribed values, not U's, on constrained dofs: the residual of a free row
    then does not depend on constrained entries of U, so the Jacobian with those rows and columns
@@ -17,6 +18,7 @@ static PetscErrorCode FormResidual(SNES snes, Vec U, Vec F, void *ctx)
   PetscCall(VecZeroEntries(F));
   PetscCall(DMLocalToGlobal(s->dm, s->Floc, ADD_VALUES, F));
   if (s->contact) PetscCall(IndContactResidual(s->contact, s->Ubc, F));
+  if (s->border) PetscCall(IndBorderedResidual(s->border));
   PetscCall(IndBCApplyResidual(s->bc, s->load_factor, U, F));
   counts[0] = s->assembly->nfailed;
   counts[1] = s->assembly->nplastic;
@@ -86,8 +88,14 @@ static PetscErrorCode FormJacobian(SNES snes, Vec U, Mat A, Mat P, void *ctx)
   PetscCall(IndBCApplySolution(s->bc, s->load_factor, s->Ubc));
   PetscCall(DMGlobalToLocal(s->dm, s->Ubc, INSERT_VALUES, s->Uloc));
   PetscCall(IndAssemblyJacobian(s->assembly, s->Uloc, P));
-  if (s->contact) PetscCall(IndContactJacobian(s->contact, s->Ubc, P));
+  if (s->border) PetscCall(IndBorderedBodyJacobian(s->border, P));
+  if (s->contact)
+    PetscCall(IndContactJacobian(s->contact, s->Ubc, P, s->border ? IndBorderedDepthDerivative(s->border) : NULL));
   PetscCall(IndBCApplyJacobian(s->bc, P));
+  if (s->border) { /* constrained rows do not move */
+    PetscCall(IndBCApplySolution(s->bc, 0.0, IndBorderedDepthDerivative(s->border)));
+    PetscCall(IndBCApplySolution(s->bc, 0.0, IndBorderedLoadDerivative(s->border)));
+  }
   {
     KSP ksp;
     PetscCall(SNESGetKSP(snes, &ksp));
@@ -100,6 +108,12 @@ static PetscErrorCode FormJacobian(SNES snes, Vec U, Mat A, Mat P, void *ctx)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The residual of the whole system: under load control the load equation's beside equilibrium. */
+static PetscReal SystemNorm(IndSolver s, PetscReal fnorm)
+{
+  return s->border ? PetscSqrtReal(fnorm * fnorm + PetscSqr(IndBorderedLoadResidual(s->border))) : fnorm;
+}
+
 /* Semi-smooth Newton can cycle for ever between contact states (stick, slip, open) of a few nodes,
    with the same residuals coming back every 2 to 5 iterations. Stopping after -newton_stall_its
    iterations without a new smallest residual lets the load step be cut long before -snes_max_it. */
@@ -109,7 +123,10 @@ static PetscErrorCode ConvergedUnlessStalled(SNES snes, PetscInt it, PetscReal x
   IndSolver s = (IndSolver)ctx;
 
   PetscFunctionBeginUser;
+  fnorm = SystemNorm(s, fnorm);
   PetscCall(SNESConvergedDefault(snes, it, xnorm, snorm, fnorm, reason, NULL));
+  /* A load short of its tolerance is not converged, however small the step or the residual */
+  if (s->border && *reason > 0 && !IndBorderedLoadMet(s->border)) *reason = SNES_CONVERGED_ITERATING;
   if (it == 0) {
     s->fmin    = fnorm;
     s->itmin   = 0;
@@ -227,6 +244,7 @@ PetscErrorCode IndSolverSolve(IndSolver s, PetscReal load_factor, Vec U, IndSolv
   IndContact c           = s->contact;
   PetscReal  last_change = PETSC_MAX_REAL, atol = 0, rtol = 0, stol = 0, step_atol = 0;
   PetscInt   maxit = 0, maxf = 0;
+  PetscInt   border_linear = s->border ? IndBorderedLinearIterations(s->border) : 0;
   Vec        F     = NULL;
 
   PetscFunctionBeginUser;
@@ -245,6 +263,7 @@ PetscErrorCode IndSolverSolve(IndSolver s, PetscReal load_factor, Vec U, IndSolv
     PetscCall(DMGetGlobalVector(s->dm, &F));
     PetscCall(FormResidual(NULL, U, F, s));
     PetscCall(VecNorm(F, NORM_2, &fnorm));
+    fnorm     = SystemNorm(s, fnorm);
     step_atol = PetscMax(atol, 1e-3 * rtol * fnorm);
     PetscCall(SNESSetTolerances(s->snes, step_atol, rtol, stol, maxit, maxf));
   }
@@ -285,7 +304,7 @@ PetscErrorCode IndSolverSolve(IndSolver s, PetscReal load_factor, Vec U, IndSolv
        just driven below its tolerance; relative to a vanishing reaction (the last node leaving the
        contact) it could never be small, so Newton's absolute tolerance also accepts it. */
     if ((r->contact.change <= c->rtol || (c->variant == IND_UZAWA_NEWTON && r->contact.mismatch <= step_atol))
-      && r->contact.penetration <= c->pen_atol) {
+      && r->contact.penetration <= c->pen_atol && (!s->border || IndBorderedLoadMet(s->border))) {
       r->converged = PETSC_TRUE;
       break;
     }
@@ -305,6 +324,7 @@ PetscErrorCode IndSolverSolve(IndSolver s, PetscReal load_factor, Vec U, IndSolv
     }
     last_change = r->contact.change;
   }
+  if (s->border) r->linear += IndBorderedLinearIterations(s->border) - border_linear;
   if (c) {
     PetscCall(SNESSetTolerances(s->snes, atol, rtol, stol, maxit, maxf));
     PetscCall(DMRestoreGlobalVector(s->dm, &F));
@@ -368,6 +388,34 @@ PetscErrorCode IndSolverPredict(IndSolver s, PetscReal t_old, PetscReal t_new, V
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+PetscErrorCode IndSolverSetLoadControl(IndSolver s, PetscReal depth_max, PetscReal load_tol)
+{
+  SNESLineSearch ls;
+  Vec            U;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMGetGlobalVector(s->dm, &U));
+  PetscCall(IndBorderedCreate(s->contact, U, depth_max, load_tol, &s->border));
+  PetscCall(DMRestoreGlobalVector(s->dm, &U));
+  PetscCall(SNESGetLineSearch(s->snes, &ls));
+  PetscCall(SNESLineSearchSetType(ls, SNESLINESEARCHSHELL));
+  PetscCall(SNESLineSearchShellSetUserFunc(ls, IndBorderedLineSearch, s->border));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode IndSolverSetLoadTarget(IndSolver s, PetscReal load)
+{
+  PetscFunctionBeginUser;
+  PetscCall(IndBorderedSetTarget(s->border, load));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscBool IndSolverLoadOutOfReach(IndSolver s, PetscReal *load)
+{
+  *load = s->border ? IndBorderedLoad(s->border) : 0;
+  return s->border ? IndBorderedOutOfReach(s->border) : PETSC_FALSE;
+}
+
 PetscErrorCode IndSolverEvaluate(IndSolver s, Vec U)
 {
   Vec F;
@@ -397,6 +445,7 @@ PetscErrorCode IndSolverDestroy(IndSolver *s)
 {
   PetscFunctionBeginUser;
   if (!*s) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(IndBorderedDestroy(&(*s)->border));
   PetscCall(SNESDestroy(&(*s)->snes));
   PetscCall(MatDestroy(&(*s)->J));
   PetscCall(VecDestroy(&(*s)->Uloc));
