@@ -21,5 +21,9 @@ typedef struct {
 PetscErrorCode IndRunDirSetUp(MPI_Comm comm, PetscBool writes, IndRunDir *rundir);
 /* Writes path atomically: the caller wrote path.tmp; this renames it over path (rank 0 only calls it). */
 PetscErrorCode IndRenameInto(const char tmp[], const char path[]);
+/* The marker a run stopped by a signal leaves beside its checkpoint ("stopped by SIGTERM after step 17"):
+   a job script whose launcher reports a status of its own (Open MPI's mpiexec after a forwarded SIGTERM)
+   still knows the run stopped to be continued. A restart removes it. */
+#define IND_STOPPED_FILE "indent.stopped"
 /* The name under which checkpoint path is kept when a newer one replaces it (x.h5: x.previous.h5). */
 void           IndRunDirPreviousCheckpoint(const char path[], char *previous, size_t len);

@@ -29,3 +29,6 @@ IndRunLockVerdict IndRunLockJudge(const IndRunLockOwner *owner, const char host[
 /* Collective: takes the lock of dir (which exists) for this process until it exits, or errors with one
    line starting with option and naming the owner; warning: non-empty when a stale lock was taken over. */
 PetscErrorCode    IndRunLockTake(MPI_Comm comm, const char dir[], const char option[], char warning[], size_t len);
+/* Removes the lock this process holds (also done at exit): before the ranks end with a non-zero status,
+   since mpiexec kills the ranks still running when one of them ends so, before their exit handlers run. */
+void              IndRunLockRelease(void);

@@ -9,6 +9,8 @@ static const char help[] = "indent: finite-element nanoindentation of elasto-pla
 #include "ind_optionsfile.h"
 #include "ind_parentwatch.h"
 #include "ind_signals.h"
+#include "ind_iofault.h"
+#include "ind_runlock.h"
 
 static int stopped; /* the signal that stopped the run after its checkpoint (0: none) */
 
@@ -50,10 +52,12 @@ int main(int argc, char **argv)
   IndOptionsFilesRemoveCopies(&copies);
   if (ierr) return (int)ierr;
   ierr = IndErrorSetUp("indent");
+  if (!ierr) ierr = IndIOFaultSetUp();
   if (!ierr) ierr = IndHelpCaptureEnd();
   if (!ierr) ierr = Run();
   /* a listing stopped by a bad input still shows what it read, then the error */
   if (IndHelpListing()) (void)IndHelpPrint(help);
+  IndRunLockRelease();
   {
     const int status = IndErrorFinish(ierr);
     /* A batch script resubmits on IND_EXIT_CHECKPOINTED: the checkpoint is written, the run not finished. */

@@ -32,6 +32,7 @@ out=$(grep -A1 -x -- -output_dir "$STUB_DIR/launch_args" | tail -n 1)
 case $STUB_MODE in
   exit75) echo new > "$out/checkpoint.h5"; exit 75 ;;
   error75) exit 75 ;;
+  stopped1) echo new > "$out/checkpoint.h5"; echo "stopped by SIGTERM after step 3" > "$out/indent.stopped"; exit 1 ;;
   exit*) exit "${STUB_MODE#exit}" ;;
   wait)
     trap 'echo USR1 >> "$STUB_DIR/signals"; echo new > "$out/checkpoint.h5"; exit 75' USR1
@@ -174,6 +175,14 @@ rc=$?
 called "scontrol requeue 4242" || fail "exit 75: no 'scontrol requeue 4242'"
 called sbatch && fail "exit 75: sbatch as well as requeue"
 echo "ok: exit 75 requeues"
+
+# 3b. The launcher's own status 1 after indent stopped with a checkpoint (its marker): requeues as on 75.
+reset checkpoint
+slurm STUB_MODE=stopped1
+rc=$?
+((rc == 0)) || fail "stopped, launcher status 1: job exit status $rc"
+called "scontrol requeue 4242" || fail "stopped, launcher status 1: no 'scontrol requeue 4242'"
+echo "ok: the stop marker requeues when the launcher reports 1"
 
 # 4. Exit 75 with the cap reached (SLURM_RESTART_COUNT 10 of 10): no requeue, status 75.
 reset checkpoint

@@ -23,7 +23,7 @@ INDENT_EX_TEMPFAIL=75
 # run refuses a directory holding any of them unless -output_overwrite is given.
 INDENT_RUN_FILES=(indent.h5 indent.xdmf indent.xdmf.tmp load_displacement.csv summary.txt summary.json
   checkpoint.h5 checkpoint.h5.tmp checkpoint.previous.h5 mesh.msh mesh.msh.log imprint.csv imprint.png
-  load_displacement.png stress_slice.png)
+  load_displacement.png stress_slice.png indent.stopped)
 
 indent_log() {
   printf 'indent-job %s: %s\n' "$(date '+%F %T')" "$*"
@@ -209,6 +209,14 @@ indent_job_main() {
   if ((rc == 0)); then
     indent_log "indent finished: $OUTPUT_DIR/summary.json"
     return 0
+  fi
+  # Open MPI's mpiexec reports a status of its own (1) after forwarding SIGTERM, though every rank wrote the
+  # checkpoint and exited with 75: the marker indent leaves beside the checkpoint says it stopped.
+  if ((rc != INDENT_EX_TEMPFAIL)) && [[ -f $OUTPUT_DIR/indent.stopped ]] &&
+    (($(stat -c %Y "$OUTPUT_DIR/indent.stopped") >= start)); then
+    indent_log "the launcher exited with $rc, but indent stopped with a checkpoint ($(cat "$OUTPUT_DIR/indent.stopped")):" \
+      "as exit status 75"
+    rc=$INDENT_EX_TEMPFAIL
   fi
   if ((rc != INDENT_EX_TEMPFAIL)); then
     indent_log "indent failed with exit status $rc: not resubmitting"

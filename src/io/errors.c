@@ -3,6 +3,7 @@
 #include <string.h>
 #include <time.h>
 #include "ind_common.h"
+#include "ind_iofault.h"
 
 /* The error being propagated: recorded where it was raised (PETSC_ERROR_INITIAL), read at the end. */
 static struct {
@@ -44,6 +45,7 @@ static PetscBool UserFacing(PetscErrorCode n, const char file[])
     case PETSC_ERR_SUP:
     case PETSC_ERR_NOT_CONVERGED:
     case PETSC_ERR_WRONG_MPI_SIZE:
+    case PETSC_ERR_SIG:
       return PETSC_TRUE;
     default:
       return PETSC_FALSE;
@@ -152,6 +154,15 @@ static PetscBool EveryRankFailed(double seconds)
   return done ? PETSC_TRUE : PETSC_FALSE;
 }
 
+/* A failed write (IND_EXIT_IO) or a stop signal before anything could be saved (EX_TEMPFAIL, as a stopped
+   run's, so that a job script sees the stop; it finds no checkpoint of this part) end with their own status. */
+static int ExitStatus(void)
+{
+  if (E.code == PETSC_ERR_FILE_WRITE) return IND_EXIT_IO;
+  if (E.code == PETSC_ERR_SIG) return 75;
+  return 1;
+}
+
 int IndErrorFinish(PetscErrorCode ierr)
 {
   PetscMPIInt rank = 0;
@@ -183,11 +194,11 @@ int IndErrorFinish(PetscErrorCode ierr)
     (void)PetscOptionsClearValue(NULL, "-log_view");
     MPI_Comm_free(&E.agree);
     (void)PetscFinalize();
-    return 1;
+    return ExitStatus();
   }
   fprintf(stderr, "%s: error: %s\n", E.program, E.message);
   fflush(stderr);
-  MPI_Abort(MPI_COMM_WORLD, 1);
+  MPI_Abort(MPI_COMM_WORLD, ExitStatus());
   return 1;
 }
 

@@ -4,9 +4,42 @@
 #include <math.h>
 #include <string.h>
 #include <stdlib.h>
+#include <signal.h>
+#include <time.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 #include "ind_files.h"
+#include "ind_iofault.h"
+#include "ind_signals.h"
+
+/* Runs cmd with sh in a process group of its own, so that a signal meant for indent's group (a job
+   launcher's, a terminal's) does not kill it unseen; a stop signal indent receives meanwhile ends it
+   (*stopped: that signal). Returns system()'s status, or -1 when it cannot start. */
+static int RunShell(const char cmd[], int *stopped)
+{
+  const struct timespec pause = {0, 20000000};
+  int                   status;
+  pid_t                 pid;
+
+  *stopped = 0;
+  pid      = fork();
+  if (pid < 0) return -1;
+  if (pid == 0) {
+    (void)setpgid(0, 0);
+    execl("/bin/sh", "sh", "-c", cmd, (char *)NULL);
+    _exit(127);
+  }
+  (void)setpgid(pid, pid); /* either may run first */
+  for (;;) {
+    const pid_t done = waitpid(pid, &status, WNOHANG);
+    if (done == pid) break;
+    if (done < 0 && errno != EINTR) return -1;
+    if (!*stopped && (*stopped = IndSignalsReceived())) (void)kill(-pid, SIGTERM);
+    nanosleep(&pause, NULL);
+  }
+  return status;
+}
 
 /* On rank 0: why dir cannot be (made) a writable directory, or "" when it can. */
 static void DirectoryProblem(const char dir[], PetscBool create, char why[], size_t len)
@@ -86,7 +119,7 @@ PetscErrorCode IndGmshMesh(MPI_Comm comm, const char gmsh[], const char geo[], c
   const char msh[])
 {
   PetscMPIInt rank;
-  int         status = 0;
+  int         status = 0, cause = 0, stopped = 0;
   char        cmd[4 * PETSC_MAX_PATH_LEN], log[PETSC_MAX_PATH_LEN + 8], tmp[PETSC_MAX_PATH_LEN + 8];
 
   PetscFunctionBeginUser;
@@ -110,16 +143,26 @@ PetscErrorCode IndGmshMesh(MPI_Comm comm, const char gmsh[], const char geo[], c
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   if (!rank) {
     (void)remove(tmp);
-    status = system(cmd);
+    status = RunShell(cmd, &stopped);
+    if (stopped) status = -4;
     if (status == 0) {
       PetscBool ok;
       PetscCall(PetscTestFile(tmp, 'r', &ok));
       if (!ok) status = -1;
     }
+    /* gmsh does not check its writes: a full disk leaves a truncated mesh and status 0 */
+    if (status == 0 && (cause = IndIOFaultFileCause(tmp))) status = -3;
     if (status == 0 && rename(tmp, msh)) status = -2;
     if (status) (void)remove(tmp);
   }
   PetscCallMPI(MPI_Bcast(&status, 1, MPI_INT, 0, comm));
+  PetscCallMPI(MPI_Bcast(&cause, 1, MPI_INT, 0, comm));
+  PetscCallMPI(MPI_Bcast(&stopped, 1, MPI_INT, 0, comm));
+  PetscCheck(status != -4, comm, PETSC_ERR_SIG,
+             "stopped by %s while gmsh meshed '%s' (-mesh_file): no step was solved, so there is nothing to continue "
+             "from; run again", IndSignalName(stopped), geo);
+  PetscCheck(status != -3, comm, PETSC_ERR_FILE_WRITE, "gmsh could not write the mesh of '%s' (-mesh_file) to '%s': %s",
+             geo, msh, strerror(cause));
   PetscCheck(status != -2, comm, PETSC_ERR_FILE_WRITE,
     "gmsh meshed '%s' (-mesh_file) but its mesh could not be renamed to '%s'", geo, msh);
   PetscCheck(status == 0, comm, PETSC_ERR_USER_INPUT,

@@ -17,7 +17,8 @@ static const char *const RunFiles[] = {"indent.h5", "indent.xdmf", "indent.xdmf.
                                        "imprint.csv", "imprint.png", "stress_slice.png", "load_displacement.png",
                                        "curve.niget", "curve_hysitron.txt", "imprint.xyz", "imprint.gsf",
                                        "csm.csv", "csm.csv.tmp", "csm.png", "scratch.csv", "scratch.csv.tmp",
-                                       "scratch.png", "groove_along.csv", "groove_across.csv", "groove.png"};
+                                       "scratch.png", "groove_along.csv", "groove_across.csv", "groove.png",
+                                       IND_STOPPED_FILE};
 #define NRUNFILES ((int)(sizeof(RunFiles) / sizeof(RunFiles[0])))
 
 void IndRunDirPreviousCheckpoint(const char path[], char *previous, size_t len)

@@ -22,6 +22,11 @@ static void Release(void)
   Held.path[0] = 0;
 }
 
+void IndRunLockRelease(void)
+{
+  Release();
+}
+
 /* The scheduler's id of this job (a requeued job's earlier part is over once this part runs). */
 static const char *JobId(void)
 {

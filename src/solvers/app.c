@@ -1,6 +1,7 @@
 #define _POSIX_C_SOURCE 200809L /* sigaction, gmtime_r, strtok_r */
 #include <signal.h>
 #include <stdio.h>
+#include <string.h>
 #include <time.h>
 #include <sys/stat.h>
 #include "ind_app.h"
@@ -10,6 +11,7 @@
 #include "ind_options.h"
 #include "ind_csm.h"
 #include "ind_stepcsv.h"
+#include "runwrite.h"
 
 const char *const IndPredictorTypes[] = {"extrapolate", "tangent", "none", "IndPredictor", "IND_PREDICTOR_", NULL};
 
@@ -104,6 +106,8 @@ PetscErrorCode IndAppCreate(MPI_Comm comm, IndApp *out)
   if (app->rundir.restart) {
     IndSummary sum = app->summary;
     PetscCall(IndCheckpointRead(app, app->rundir.restart_file));
+    if (!strcmp(app->rundir.restart_file, app->rundir.checkpoint)) app->checkpointed = app->path.accepted;
+    PetscCall(IndAppRemoveStopMarker(app)); /* this part may stop for its own reasons */
     PetscCall(IndStepCSVTruncate(comm, app->rundir.dir, IND_CSM_FILE, app->path.accepted));
     PetscCall(IndStepCSVTruncate(comm, app->rundir.dir, IND_SCRATCH_FILE, app->path.accepted));
     PetscCall(IndOutputResume(app->output, sum ? sum->n : 0, sum ? sum->pts : NULL));
@@ -263,62 +267,15 @@ PetscErrorCode IndAppSolveStep(IndApp app, PetscReal t, IndStepResult *r)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode Elapsed(IndApp app)
-{
-  PetscLogDouble now;
-
-  PetscFunctionBeginUser;
-  PetscCall(PetscTime(&now));
-  app->elapsed_now = now - app->t_start;
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-static PetscErrorCode Checkpoint(IndApp app, PetscBool stopping)
-{
-  PetscLogDouble t0, t1;
-
-  PetscFunctionBeginUser;
-  if (!app->rundir.ready || app->checkpointed == app->path.accepted) PetscFunctionReturn(PETSC_SUCCESS);
-  app->checkpointed = app->path.accepted;
-  PetscCall(Elapsed(app));
-  PetscCall(PetscTime(&t0));
-  IndSignalsDeferBegin(); /* a second Ctrl-C must not leave half a checkpoint */
-  PetscCall(IndCheckpointWrite(app, app->rundir.checkpoint));
-  IndSignalsDeferEnd(stopping);
-  PetscCall(PetscTime(&t1));
-  if (!app->quiet) {
-    struct stat st;
-    double      mb = stat(app->rundir.checkpoint, &st) ? 0.0 : (double)st.st_size / (1 << 20);
-    PetscCall(PetscPrintf(app->comm, "  checkpoint after step %" PetscInt_FMT ": %.1f MB in %.2f s\n",
-      app->path.accepted, mb,
-                          (double)(t1 - t0)));
-  }
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-static PetscErrorCode RemoveCheckpoint(IndApp app)
-{
-  PetscMPIInt rank;
-
-  PetscFunctionBeginUser;
-  PetscCallMPI(MPI_Comm_rank(app->comm, &rank));
-  if (!rank && app->rundir.ready) {
-    char previous[PETSC_MAX_PATH_LEN];
-    IndRunDirPreviousCheckpoint(app->rundir.checkpoint, previous, sizeof(previous));
-    (void)remove(app->rundir.checkpoint);
-    (void)remove(previous);
-  }
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 /* A signal came: the state of the last accepted step goes to the checkpoint, and the run ends. */
 static PetscErrorCode Stop(IndApp app, int signum)
 {
   const char *name = IndSignalName(signum);
 
   PetscFunctionBeginUser;
-  PetscCall(Checkpoint(app, PETSC_TRUE));
+  PetscCall(IndAppWriteCheckpoint(app, PETSC_TRUE));
   app->stopped = signum;
+  if (app->rundir.ready) PetscCall(IndAppWriteStopMarker(app, name));
   if (app->rundir.ready)
     PetscCall(PetscPrintf(app->comm,
                           "indent: stopped by %s after step %" PetscInt_FMT "; checkpoint %s written: "
@@ -377,18 +334,15 @@ PetscErrorCode IndAppRun(IndApp app)
     }
     PetscCall(IndRunCheckStep(app, &r, &app->warnings, PETSC_TRUE));
     PetscCall(IndOutputSetStepInfo(app->output, lp->accepted, r.t, r.lambda, r.depth, r.contact.load * 1e-3));
-    PetscCall(IndOutputWriteStep(app->output, app->contact ? r.depth : r.lambda, app->U, app->assembly));
     if (app->contact) {
       IndCurvePoint p = {lp->accepted, r.t, r.depth, r.contact.load * 1e-3, r.contact.contact, r.contact.stick,
         r.contact.slip, r.newton, r.outer, r.linear, lp->cutbacks, r.contact.penetration, r.contact.area,
         r.contact.pileup, r.contact.deepest, r.seconds};
-      PetscCall(IndOutputCurvePoint(app->output, &p));
+      /* in the record first: a checkpoint after a failed write then carries this step's point */
       PetscCall(IndSummaryAddPoint(app->summary, &p));
-    }
+      PetscCall(IndAppWriteStep(app, &r, &p));
+    } else PetscCall(IndAppWriteStep(app, &r, NULL));
     if (app->scratch.length > 0) {
-      if (app->rundir.ready)
-        PetscCall(IndScratchWrite(app->comm, app->rundir.dir, &app->scratch, lp->accepted, r.t,
-                                  IndLoadPathScratchFraction(lp, r.t), r.depth, &r.contact));
       if (!app->quiet && IndLoadPathScratching(lp, t)) {
         PetscReal normal, lateral, side;
         IndScratchForces(&app->scratch, &r.contact, &normal, &lateral, &side);
@@ -416,18 +370,17 @@ PetscErrorCode IndAppRun(IndApp app)
       t) <= lp->unload_to) IndLoadPathFinish(lp);
     if (lp->accepted == app->stop_after) IndSignalsRaise(SIGTERM);
     else if (app->checkpoint_every && lp->accepted % app->checkpoint_every == 0 && !IndLoadPathDone(lp))
-      PetscCall(Checkpoint(app, PETSC_FALSE));
+      PetscCall(IndAppWriteCheckpoint(app, PETSC_FALSE));
   }
   if (app->stopped) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCall(Elapsed(app));
+  PetscCall(IndAppElapsed(app));
   if (app->summary) {
     IndRunInfo info = {app->start_time, app->elapsed_before + app->elapsed_now, app->rundir.restart, app->contact,
                        &app->warnings, app->scratch.length > 0 ? PETSC_TRUE : PETSC_FALSE};
-    PetscCall(IndSummaryFinish(app->summary, &app->contact->indenter, &info, app->output->dir, app->output->curve,
-      app->quiet ? PETSC_FALSE : PETSC_TRUE));
+    PetscCall(IndAppWriteSummary(app, &info));
   }
   /* The run is complete: its checkpoint could only restart a finished run. */
-  PetscCall(RemoveCheckpoint(app));
+  PetscCall(IndAppRemoveCheckpoint(app));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
