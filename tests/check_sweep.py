@@ -149,7 +149,7 @@ def test_dry_run(work):
 
 
 def summary(P, H, E, status="finished", ranks=2):
-    """A summary.json as indent writes it (keys from src/io/summary.c and the provenance keys)."""
+    """A summary.json as indent writes it (keys from src/analysis/summary.c and the provenance keys)."""
     return {"indenter": "berkovich", "op_fraction": 0.5, "op_epsilon": 0.75, "op_beta": 1.034,
             "P_max_uN": P, "h_max_nm": 60, "final_depth_nm": 21.5, "final_load_uN": 0, "H_GPa": H,
             "E_r_GPa": E * 1.1, "E_GPa": E, "steps": 224, "cutbacks": 0, "newton": 1200,
