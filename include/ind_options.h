@@ -72,3 +72,6 @@ PetscErrorCode IndHelpPrint(const char intro[]);
 /* Whether this run only lists its options (-help): it reads every option, builds what it must to know
    which options apply (a .geo is not meshed: see mesh.c), solves nothing and writes no file. */
 PetscBool      IndHelpListing(void);
+/* A silent listing (no -help): the set-up reads every option as a listing does, without meshing a .geo
+   or writing a file, so that its unknown-option check comes before the real set-up's work. */
+void           IndHelpSetChecking(PetscBool on);

@@ -185,6 +185,11 @@ bad_np2(bad_geo_unknown_parameter_np2 ${EXPECT_ERROR} --fresh ${BAD_DIR}/unknown
   --absent ${BAD_DIR}/unknown_parameter/mesh.msh --absent ${BAD_DIR}/unknown_parameter/mesh.msh.log
   "${RE_UNKNOWN_PARAMETER}"
   ${INDENT_NP2} ${PAPER_COARSE} -mesh_geo_parameters htip=20 -output_dir ${BAD_DIR}/unknown_parameter)
+# A misspelt option with a .geo: reported once, on 2 ranks, before gmsh runs (no mesh, no file written).
+bad_np2(bad_option_before_gmsh_np2 ${EXPECT_ERROR} --fresh ${BAD_DIR}/option_before_gmsh
+  --absent ${BAD_DIR}/option_before_gmsh/mesh.msh --absent ${BAD_DIR}/option_before_gmsh/mesh.msh.log
+  "Unknown or unused option\\(s\\): -film_yeld"
+  ${INDENT_NP2} ${PAPER_COARSE} -film_yeld 0.3 -output_dir ${BAD_DIR}/option_before_gmsh)
 indent_script_test(bad_geo_parameter_value ${EXPECT_ERROR} "-mesh_geo_parameters: 'abc' for 'h_tip' is not a number"
   ${INDENT} ${PAPER_COARSE} -mesh_geo_parameters h_tip=abc -output_dir ${BAD_DIR}/parameter_value)
 

@@ -184,9 +184,17 @@ PetscErrorCode IndHelpPrint(const char intro[])
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+static PetscBool checking; /* IndHelpSetChecking */
+
+void IndHelpSetChecking(PetscBool on)
+{
+  checking = on;
+}
+
 PetscBool IndHelpListing(void)
 {
   PetscBool help = PETSC_FALSE;
+  if (checking) return PETSC_TRUE;
   if (PetscOptionsHasHelp(NULL, &help)) return PETSC_FALSE;
   return help;
 }

@@ -140,7 +140,9 @@ PetscErrorCode IndRunDirSetUp(MPI_Comm comm, PetscBool writes, IndRunDir *rd)
     "-restart needs a checkpoint file or the directory holding one");
   PetscCheck(!(has_restart && rd->overwrite), comm, PETSC_ERR_ARG_INCOMP,
     "-restart continues a run and -output_overwrite replaces it: give one");
-  if (!writes && !has_restart) PetscFunctionReturn(PETSC_SUCCESS);
+  /* A listing (-help, or the option check before a .geo is meshed) reads the options and touches nothing:
+     no lock, no checkpoint read. */
+  if (IndHelpListing() || (!writes && !has_restart)) PetscFunctionReturn(PETSC_SUCCESS);
 
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   if (!rank) Inspect(rd->dir, &kind, found, sizeof(found));

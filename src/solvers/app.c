@@ -63,7 +63,7 @@ PetscErrorCode IndAppCreate(MPI_Comm comm, IndApp *out)
     PetscCall(PetscOptionsGetBool(NULL, NULL, "-output_fields", &fields, NULL));
     PetscCall(PetscOptionsGetBool(NULL, NULL, "-output_curve", &curve, NULL));
     PetscCall(PetscOptionsHasName(NULL, NULL, "-indenter_type", &indenter));
-    PetscCall(PetscOptionsHasHelp(NULL, &listing));
+    listing = IndHelpListing();
     PetscCall(IndRunDirSetUp(comm, (fields || (indenter && curve)) && !listing, &app->rundir));
     if (app->rundir.restart) PetscCall(IndCheckpointCheck(comm, app->rundir.restart_file));
   }
