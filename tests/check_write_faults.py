@@ -33,7 +33,9 @@ def limited(args, nranks, kib, options):
     """indent on nranks with the file-size limit kib KiB for the ranks; (status, non-empty output lines)."""
     cmd = [args.mpiexec, "-n", str(nranks), "sh", "-c", f'ulimit -f {kib} && exec "$0" "$@"', args.indent, *options]
     print("+ (ulimit -f %d for the ranks)" % kib, " ".join(cmd[4:]), flush=True)
-    env = dict(os.environ, OMPI_MCA_orte_execute_quiet="1", OMPI_MCA_btl="self,tcp")
+    # one host: over the loopback, which Open MPI leaves out by default (a machine may have no other)
+    env = dict(os.environ, OMPI_MCA_orte_execute_quiet="1", OMPI_MCA_btl="self,tcp",
+               OMPI_MCA_btl_tcp_if_include="lo")
     proc = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, env=env)
     indentrun.pass_on_unfreed(proc.stdout)
     return proc.returncode, [line for line in proc.stdout.splitlines() if line.strip()]
