@@ -60,8 +60,8 @@ def main():
         check(status == IO_STATUS, f"{label}: exit status {status} (want {IO_STATUS})")
         check(len(errors) == 1 and len(lines) == len([x for x in lines if x.startswith("indent: ")]),
               f"{label}: one error line and nothing else but indent's lines")
-        pattern = rf"writing '{re.escape(os.path.join(out, file))}' after step {step_pattern} failed: File too large; " \
-                  + continued
+        where = re.escape(os.path.join(out, file))
+        pattern = rf"writing '{where}' after step {step_pattern} failed: File too large; " + continued
         check(bool(errors) and re.search(pattern, errors[0]) is not None, f"{label}: the line matches '{pattern}'")
         left = [f for f in ("indent.lock", "checkpoint.h5.tmp") if os.path.exists(os.path.join(out, f))]
         check(not left, f"{label}: nothing left behind ({left})")
