@@ -48,7 +48,7 @@ def digests(d):
 def flip_history_bit(path):
     """Flips the lowest mantissa bit of one history value, in place, through HDF5 (the file stays valid)."""
     with h5py.File(path, "r+") as f:
-        h = f["cells/history"]
+        h = f["cells/history_committed"]
         row = h.shape[0] // 2
         v = np.array(h[row], dtype=np.float64)
         k = int(np.argmax(np.abs(v)))
@@ -90,7 +90,8 @@ def main():
     ckpt, prev = os.path.join(run, "checkpoint.h5"), os.path.join(run, "checkpoint.previous.h5")
     check(os.path.isfile(prev), "the checkpoint of step 3 kept as checkpoint.previous.h5")
     with h5py.File(prev, "r") as f:
-        check(int(f["run/scalars"][2]) == 3, f"checkpoint.previous.h5 is of step {int(f['run/scalars'][2])}, not 3")
+        step = int(f["load_path/position"][2])
+        check(step == 3, f"checkpoint.previous.h5 is of step {step}, not 3")
     advice = ["is damaged", "after step 3", "-restart " + os.path.join(args.workdir, "{}", "checkpoint.previous.h5")]
 
     def zero_middle(p):

@@ -24,16 +24,18 @@ typedef struct {
 static PetscErrorCode CheckStep(IndApp app, const IndStepResult *r, void *ctx)
 {
   Expect            *e  = (Expect *)ctx;
-  const IndMaterial *m  = &app->mats->mat[0];
-  const IndIndenter *in = &app->contact->indenter;
+  const IndMaterial *m  = IndMaterialsGet(IndAppGetMaterials(app), 0);
+  IndContactNodes    cn;
+  const IndIndenter *in = IndContactGetIndenter(IndAppGetContact(app));
   const PetscReal    Es = m->young / (1 - m->poisson * m->poisson), h = r->depth;
 
   PetscFunctionBeginUser;
-  if ((e->hertz || e->sneddon) && !IndLoadPathUnloading(&app->path, r->t) && h >= e->from && h > 0) {
+  PetscCall(IndContactGetNodes(IndAppGetContact(app), &cn));
+  if ((e->hertz || e->sneddon) && !IndLoadPathUnloading(IndAppGetLoadPath(app), r->t) && h >= e->from && h > 0) {
     const PetscReal P = e->hertz ? 4.0 / 3.0 * Es * PetscSqrtReal(in->radius) * PetscPowReal(h,
       1.5) : 2.0 / PETSC_PI * Es * PetscTanReal(in->angle) * h * h;
     const PetscReal err = r->contact.load / P - 1;
-    PetscCall(PetscPrintf(app->comm, "  depth %8.3f nm: P %.6e nN, %s %.6e nN, error %+.3f%%\n", (double)h,
+    PetscCall(PetscPrintf(IndAppGetComm(app), "  depth %8.3f nm: P %.6e nN, %s %.6e nN, error %+.3f%%\n", (double)h,
       (double)r->contact.load, e->hertz ? "Hertz" : "Sneddon", (double)P, (double)(100 * err)));
     e->worst = PetscMax(e->worst, PetscAbsReal(err));
     e->checked++;
@@ -41,40 +43,40 @@ static PetscErrorCode CheckStep(IndApp app, const IndStepResult *r, void *ctx)
   if (e->patch) {
     const PetscReal sigma = -m->young * h / e->height;
     PetscReal       worst = 0;
-    PetscInt        n     = app->contact->n, touching = 0;
+    PetscInt        n     = cn.n, touching = 0;
     for (PetscInt i = 0; i < n; ++i) {
       worst = PetscMax(worst,
-        PetscAbsReal(app->contact->R[3 * i + 2] / app->contact->A[i] - sigma) / PetscAbsReal(sigma));
+        PetscAbsReal(cn.R[3 * i + 2] / cn.A[i] - sigma) / PetscAbsReal(sigma));
       worst = PetscMax(worst,
-        (PetscAbsReal(app->contact->R[3 * i]) + PetscAbsReal(app->contact->R[3 * i + 1])) / (PetscAbsReal(sigma)
-          * app->contact->A[i]));
-      touching += app->contact->status[i] != IND_CONTACT_OPEN;
+        (PetscAbsReal(cn.R[3 * i]) + PetscAbsReal(cn.R[3 * i + 1])) / (PetscAbsReal(sigma)
+          * cn.A[i]));
+      touching += cn.status[i] != IND_CONTACT_OPEN;
     }
-    PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &worst, 1, MPIU_REAL, MPIU_MAX, app->comm));
-    PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &n, 1, MPIU_INT, MPI_SUM, app->comm));
-    PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &touching, 1, MPIU_INT, MPI_SUM, app->comm));
-    PetscCall(PetscPrintf(app->comm,
+    PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &worst, 1, MPIU_REAL, MPIU_MAX, IndAppGetComm(app)));
+    PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &n, 1, MPIU_INT, MPI_SUM, IndAppGetComm(app)));
+    PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &touching, 1, MPIU_INT, MPI_SUM, IndAppGetComm(app)));
+    PetscCall(PetscPrintf(IndAppGetComm(app),
       "  depth %8.4f nm: sigma_zz %.10e GPa; %" PetscInt_FMT " of %" PetscInt_FMT " nodes in contact; worst |R / A - "
       "sigma| / |sigma| = %.3e\n", (double)h, (double)sigma, touching, n, (double)worst));
-    PetscCheck(touching == n, app->comm, PETSC_ERR_PLIB,
+    PetscCheck(touching == n, IndAppGetComm(app), PETSC_ERR_PLIB,
       "Only %" PetscInt_FMT " of %" PetscInt_FMT " top nodes touch the punch", touching, n);
     e->worst = PetscMax(e->worst, worst);
     e->checked++;
   }
   if (e->stick_inside && r->contact.stick > 0 && r->contact.slip > 0) {
     PetscReal rstick = 0, rslip = PETSC_MAX_REAL;
-    for (PetscInt i = 0; i < app->contact->n; ++i) {
-      const PetscReal *X = app->contact->X + 3 * i,
+    for (PetscInt i = 0; i < cn.n; ++i) {
+      const PetscReal *X = cn.X + 3 * i,
         rad = PetscSqrtReal(PetscSqr(X[0] - in->axis[0]) + PetscSqr(X[1] - in->axis[1]));
-      if (app->contact->status[i] == IND_CONTACT_STICK) rstick = PetscMax(rstick, rad);
-      if (app->contact->status[i] == IND_CONTACT_SLIP) rslip = PetscMin(rslip, rad);
+      if (cn.status[i] == IND_CONTACT_STICK) rstick = PetscMax(rstick, rad);
+      if (cn.status[i] == IND_CONTACT_SLIP) rslip = PetscMin(rslip, rad);
     }
-    PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &rstick, 1, MPIU_REAL, MPIU_MAX, app->comm));
-    PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &rslip, 1, MPIU_REAL, MPIU_MIN, app->comm));
-    PetscCall(PetscPrintf(app->comm,
+    PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &rstick, 1, MPIU_REAL, MPIU_MAX, IndAppGetComm(app)));
+    PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &rslip, 1, MPIU_REAL, MPIU_MIN, IndAppGetComm(app)));
+    PetscCall(PetscPrintf(IndAppGetComm(app),
       "  depth %8.3f nm: %" PetscInt_FMT " stick out to r = %.2f nm, %" PetscInt_FMT " slip from r = %.2f nm\n",
       (double)h, r->contact.stick, (double)rstick, r->contact.slip, (double)rslip));
-    PetscCheck(rstick <= rslip, app->comm, PETSC_ERR_PLIB,
+    PetscCheck(rstick <= rslip, IndAppGetComm(app), PETSC_ERR_PLIB,
       "A sticking node (r = %g) lies outside a slipping one (r = %g)", (double)rstick, (double)rslip);
     e->checked++;
   }
@@ -97,24 +99,25 @@ int main(int argc, char **argv)
   PetscCall(PetscOptionsGetReal(NULL, NULL, "-expect_from", &e.from, NULL));
   if (e.patch) e.tol = 1e-8;
   PetscCall(IndAppCreate(PETSC_COMM_WORLD, &app));
-  PetscCheck(app->contact, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "Needs an indenter (-indenter_type)");
+  PetscCheck(IndAppGetContact(app), PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "Needs an indenter (-indenter_type)");
   if (e.patch) {
     PetscReal zmin = PETSC_MAX_REAL;
     Vec       nodes;
-    PetscCall(IndDiscNodeCoordinates(app->disc, &nodes));
+    PetscCall(IndDiscNodeCoordinates(IndAppGetDisc(app), &nodes));
     PetscCall(VecStrideMin(nodes, 2, NULL, &zmin));
     PetscCall(VecDestroy(&nodes));
-    e.height = app->contact->indenter.surface - zmin;
+    e.height = IndContactGetIndenter(IndAppGetContact(app))->surface - zmin;
   }
   PetscCall(IndAppSetStepMonitor(app, CheckStep, &e));
   PetscCall(IndAppRun(app));
   if (e.unload) {
     PetscReal umax;
-    PetscCall(VecNorm(app->U, NORM_INFINITY, &umax));
+    PetscCall(VecNorm(IndAppGetSolution(app), NORM_INFINITY, &umax));
     PetscCall(PetscPrintf(PETSC_COMM_WORLD,
       "after unloading: depth %.4f nm, max |u| %.3e nm (%.2e of the largest depth)\n",
-      (double)app->contact->indenter.depth, (double)umax, (double)(umax / app->path.depth_max)));
-    PetscCheck(umax <= 1e-6 * app->path.depth_max, PETSC_COMM_WORLD, PETSC_ERR_PLIB,
+      (double)IndContactGetIndenter(IndAppGetContact(app))->depth, (double)umax,
+      (double)(umax / IndAppGetLoadPath(app)->depth_max)));
+    PetscCheck(umax <= 1e-6 * IndAppGetLoadPath(app)->depth_max, PETSC_COMM_WORLD, PETSC_ERR_PLIB,
       "An elastic body keeps a displacement of %g nm after unloading", (double)umax);
   }
   PetscCall(PetscPrintf(PETSC_COMM_WORLD,

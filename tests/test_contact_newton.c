@@ -3,6 +3,7 @@ static const char help[] = "Unit tests of the semi-smooth Newton contact: which 
                             "node's complementarity function against its derivative.\n";
 
 #include "contact_node.h"
+#include "contact_impl.h" /* a unit test of the contact group: it builds a contact node by hand */
 
 #include "unit_report.h"
 
@@ -87,7 +88,6 @@ static void MakeNode(IndIndenterType type, PetscReal radius, PetscReal mu, struc
   c->indenter.radius = radius;
   c->indenter.depth  = 10;
   if (IndIndenterSetUp(&c->indenter)) failures++;
-  c->variant     = IND_UZAWA_NEWTON;
   c->mu          = mu;
   c->gap_current = PETSC_TRUE;
   c->rho_scale   = 1;

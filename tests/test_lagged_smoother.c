@@ -15,8 +15,8 @@ static PetscErrorCode CornerShear(IndApp app, PetscReal a, Vec Uloc)
   PetscInt           n;
 
   PetscFunctionBeginUser;
-  PetscCall(IndDiscNodeCoordinates(app->disc, &nodes));
-  PetscCall(DMGetGlobalVector(app->disc->dm, &U));
+  PetscCall(IndDiscNodeCoordinates(IndAppGetDisc(app), &nodes));
+  PetscCall(DMGetGlobalVector(IndAppGetDM(app), &U));
   PetscCall(VecGetLocalSize(U, &n));
   PetscCall(VecGetArrayRead(nodes, &x));
   PetscCall(VecGetArray(U, &u));
@@ -27,8 +27,8 @@ static PetscErrorCode CornerShear(IndApp app, PetscReal a, Vec Uloc)
   }
   PetscCall(VecRestoreArray(U, &u));
   PetscCall(VecRestoreArrayRead(nodes, &x));
-  PetscCall(DMGlobalToLocal(app->disc->dm, U, INSERT_VALUES, Uloc));
-  PetscCall(DMRestoreGlobalVector(app->disc->dm, &U));
+  PetscCall(DMGlobalToLocal(IndAppGetDM(app), U, INSERT_VALUES, Uloc));
+  PetscCall(DMRestoreGlobalVector(IndAppGetDM(app), &U));
   PetscCall(VecDestroy(&nodes));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -37,8 +37,8 @@ static PetscErrorCode CornerShear(IndApp app, PetscReal a, Vec Uloc)
 static PetscErrorCode Tangent(IndApp app, Vec Uloc, Mat J)
 {
   PetscFunctionBeginUser;
-  PetscCall(IndAssemblyJacobian(app->assembly, Uloc, J));
-  PetscCall(IndBCApplyJacobian(app->bc, J));
+  PetscCall(IndAssemblyJacobian(IndAppGetAssembly(app), Uloc, J));
+  PetscCall(IndBCApplyJacobian(IndAppGetBC(app), J));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -67,15 +67,15 @@ int main(int argc, char **argv)
   PetscFunctionBeginUser;
   PetscCall(PetscInitialize(&argc, &argv, NULL, help));
   PetscCall(IndAppCreate(PETSC_COMM_WORLD, &app));
-  J = app->solver->J;
-  PetscCall(SNESGetKSP(app->solver->snes, &ksp));
+  J = IndSolverGetJacobian(IndAppGetSolver(app));
+  PetscCall(SNESGetKSP(IndSolverGetSNES(IndAppGetSolver(app)), &ksp));
   PetscCall(KSPSetTolerances(ksp, 1e-8, PETSC_DEFAULT, PETSC_DEFAULT, 500));
   PetscCall(MatCreateVecs(J, &x, &b));
   PetscCall(VecSet(b, 1.0));
-  PetscCall(IndBCSetUp(app->bc));
+  PetscCall(IndBCSetUp(IndAppGetBC(app)));
 
-  PetscCall(DMGetLocalVector(app->disc->dm, &U0));
-  PetscCall(DMGetLocalVector(app->disc->dm, &U1));
+  PetscCall(DMGetLocalVector(IndAppGetDM(app), &U0));
+  PetscCall(DMGetLocalVector(IndAppGetDM(app), &U1));
   PetscCall(VecZeroEntries(U0));
   PetscCall(CornerShear(app, 0.1, U1));
 
@@ -84,8 +84,15 @@ int main(int argc, char **argv)
   PetscCall(KSPSetOperators(ksp, J, J));
   PetscCall(KSPSetReusePreconditioner(ksp, PETSC_FALSE));
   PetscCall(Solve(ksp, b, x, &fresh));
-  PetscCall(IndAssemblyResidual(app->assembly, U1, app->solver->Floc));
-  PetscCall(MPIU_Allreduce(&app->assembly->nplastic, &nplastic, 1, MPIU_INT, MPI_SUM, PETSC_COMM_WORLD));
+  {
+    Vec      Floc;
+    PetscInt mine;
+    PetscCall(DMGetLocalVector(IndAppGetDM(app), &Floc));
+    PetscCall(IndAssemblyResidual(IndAppGetAssembly(app), U1, Floc));
+    PetscCall(DMRestoreLocalVector(IndAppGetDM(app), &Floc));
+    IndAssemblyGetPointCounts(IndAppGetAssembly(app), NULL, &mine);
+    PetscCall(MPIU_Allreduce(&mine, &nplastic, 1, MPIU_INT, MPI_SUM, PETSC_COMM_WORLD));
+  }
 
   /* set up on the elastic tangent, then reused on the softened one: without and with the refresh */
   for (int refresh = 0; refresh < 2; ++refresh) {
@@ -97,8 +104,8 @@ int main(int argc, char **argv)
     if (refresh) PetscCall(IndSolverRefreshFineSmoother(ksp));
     PetscCall(Solve(ksp, b, x, refresh ? &refreshed : &stale));
   }
-  PetscCall(DMRestoreLocalVector(app->disc->dm, &U0));
-  PetscCall(DMRestoreLocalVector(app->disc->dm, &U1));
+  PetscCall(DMRestoreLocalVector(IndAppGetDM(app), &U0));
+  PetscCall(DMRestoreLocalVector(IndAppGetDM(app), &U1));
   PetscCall(PetscPrintf(PETSC_COMM_WORLD,
     "Krylov iterations on the changed matrix: fresh preconditioner %" PetscInt_FMT ", reused %" PetscInt_FMT
     ", reused with its finest smoother refreshed %" PetscInt_FMT " (-1: no convergence); %" PetscInt_FMT

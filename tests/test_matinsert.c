@@ -1,6 +1,7 @@
 static const char help[] = "The Jacobian assembled at cached positions equals the one assembled by MatSetValues.\n";
 
 #include "ind_app.h"
+#include "assembly_impl.h" /* a unit test of the physics group: it switches the cached insertion off */
 
 int main(int argc, char **argv)
 {
@@ -14,11 +15,11 @@ int main(int argc, char **argv)
   PetscFunctionBeginUser;
   PetscCall(PetscInitialize(&argc, &argv, NULL, help));
   PetscCall(IndAppCreate(PETSC_COMM_WORLD, &app));
-  a = app->assembly;
+  a = IndAppGetAssembly(app);
   J = a->J;
   PetscCheck(a->insert, PETSC_COMM_WORLD, PETSC_ERR_PLIB, "No cached insertion for this matrix");
   /* a displacement that makes every entry distinct: a smooth field of position */
-  PetscCall(DMGetLocalVector(app->disc->dm, &Uloc));
+  PetscCall(DMGetLocalVector(IndAppGetDM(app), &Uloc));
   PetscCall(VecSetRandom(Uloc, NULL));
   PetscCall(VecScale(Uloc, 1e-3));
   PetscCall(IndAssemblyJacobian(a, Uloc, J));
@@ -31,7 +32,7 @@ int main(int argc, char **argv)
   PetscCall(MatAXPY(Jref, -1.0, J, SAME_NONZERO_PATTERN));
   PetscCall(MatNorm(Jref, NORM_FROBENIUS, &diff));
   PetscCall(PetscPrintf(PETSC_COMM_WORLD, "|J_cached - J_MatSetValues| / |J| = %.3e\n", (double)(diff / norm)));
-  PetscCall(DMRestoreLocalVector(app->disc->dm, &Uloc));
+  PetscCall(DMRestoreLocalVector(IndAppGetDM(app), &Uloc));
   PetscCall(MatDestroy(&Jref));
   PetscCall(IndAppDestroy(&app));
   PetscCall(PetscFinalize());

@@ -88,15 +88,20 @@ int main(int argc, char **argv)
       PetscCall(PetscOptionsSetValue(NULL, "-mesh_refine", refine));
     }
     PetscCall(IndAppCreate(PETSC_COMM_WORLD, &app));
-    lame.mu     = app->mats->mat[0].mu;
-    lame.lambda = app->mats->mat[0].kappa - 2.0 * lame.mu / 3.0;
+    lame.mu     = IndMaterialsGet(IndAppGetMaterials(app), 0)->mu;
+    lame.lambda = IndMaterialsGet(IndAppGetMaterials(app), 0)->kappa - 2.0 * lame.mu / 3.0;
     PetscCall(IndAppSetBodyForce(app, BodyForce, &lame));
-    for (PetscInt r = 0; r < app->mesh->nregions; ++r)
-      if (app->mesh->regions[r].dim == 2) PetscCall(IndAppAddBoundaryFunction(app, app->mesh->regions[r].name, 7,
+    {
+      PetscInt         nregions;
+      const IndRegion *regions;
+      PetscCall(IndMeshGetRegions(IndAppGetMesh(app), &nregions, &regions));
+    for (PetscInt r = 0; r < nregions; ++r)
+      if (regions[r].dim == 2) PetscCall(IndAppAddBoundaryFunction(app, regions[r].name, 7,
         Exact, NULL));
+    }
     PetscCall(IndAppRun(app));
-    PetscCall(DMComputeL2Diff(app->disc->dm, 0.0, funcs, NULL, app->U, &err[l]));
-    PetscCall(VecGetSize(app->U, &ndof));
+    PetscCall(DMComputeL2Diff(IndAppGetDM(app), 0.0, funcs, NULL, IndAppGetSolution(app), &err[l]));
+    PetscCall(VecGetSize(IndAppGetSolution(app), &ndof));
     h[l] = PetscPowReal(0.5, (PetscReal)l);
     PetscCall(PetscPrintf(PETSC_COMM_WORLD, "level %" PetscInt_FMT ": %8" PetscInt_FMT " dofs  L2 error %.4e", l,
       ndof, (double)err[l]));

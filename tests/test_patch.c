@@ -63,17 +63,22 @@ int main(int argc, char **argv)
   PetscCall(PetscOptionsGetReal(NULL, NULL, "-patch_tol", &tol, NULL));
   PetscCall(PetscOptionsGetReal(NULL, NULL, "-patch_uniaxial", &c.strain, &c.uniaxial));
   PetscCall(IndAppCreate(PETSC_COMM_WORLD, &app));
-  c.nu = app->mats->mat[0].poisson;
+  c.nu = IndMaterialsGet(IndAppGetMaterials(app), 0)->poisson;
   if (!c.uniaxial)
-    for (PetscInt r = 0; r < app->mesh->nregions; ++r)
-      if (app->mesh->regions[r].dim == 2) PetscCall(IndAppAddBoundaryFunction(app, app->mesh->regions[r].name, 7,
+    {
+      PetscInt         nregions;
+      const IndRegion *regions;
+      PetscCall(IndMeshGetRegions(IndAppGetMesh(app), &nregions, &regions));
+    for (PetscInt r = 0; r < nregions; ++r)
+      if (regions[r].dim == 2) PetscCall(IndAppAddBoundaryFunction(app, regions[r].name, 7,
         Affine, &c));
+    }
   PetscCall(IndAppRun(app));
 
-  PetscCall(VecDuplicate(app->U, &exact));
-  PetscCall(DMProjectFunction(app->disc->dm, 0.0, funcs, ctxs, INSERT_ALL_VALUES, exact));
+  PetscCall(VecDuplicate(IndAppGetSolution(app), &exact));
+  PetscCall(DMProjectFunction(IndAppGetDM(app), 0.0, funcs, ctxs, INSERT_ALL_VALUES, exact));
   PetscCall(VecNorm(exact, NORM_INFINITY, &norm));
-  PetscCall(VecAXPY(exact, -1.0, app->U));
+  PetscCall(VecAXPY(exact, -1.0, IndAppGetSolution(app)));
   PetscCall(VecNorm(exact, NORM_INFINITY, &err));
   PetscCall(PetscPrintf(PETSC_COMM_WORLD, "patch test: max nodal error %.3e, relative %.3e (tolerance %.1e)\n",
     (double)err, (double)(err / norm), (double)tol));
@@ -85,9 +90,9 @@ int main(int argc, char **argv)
     Vec       nodes, x;
     PetscReal nerr, nnorm;
     PetscErrorCode (*ident[1])(PetscInt, PetscReal, const PetscReal[], PetscInt, PetscScalar *, void *) = {Position};
-    PetscCall(IndDiscNodeCoordinates(app->disc, &nodes));
+    PetscCall(IndDiscNodeCoordinates(IndAppGetDisc(app), &nodes));
     PetscCall(VecDuplicate(nodes, &x));
-    PetscCall(DMProjectFunction(app->disc->dm, 0.0, ident, NULL, INSERT_ALL_VALUES, x));
+    PetscCall(DMProjectFunction(IndAppGetDM(app), 0.0, ident, NULL, INSERT_ALL_VALUES, x));
     PetscCall(VecNorm(x, NORM_INFINITY, &nnorm));
     PetscCall(VecAXPY(x, -1.0, nodes));
     PetscCall(VecNorm(x, NORM_INFINITY, &nerr));

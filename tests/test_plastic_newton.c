@@ -65,9 +65,9 @@ static PetscReal ConvergenceOrder(const Path *p)
 /* || J - J_fd ||_F / || J ||_F with J_fd by central differences of the residual, column by column. */
 static PetscErrorCode JacobianError(IndApp app, PetscReal fd_h, PetscReal *rel)
 {
-  SNES      snes = app->solver->snes;
-  Mat       J    = app->solver->J;
-  Vec       U = app->U, Up, Fp, Fm, e, Jc;
+  SNES      snes = IndSolverGetSNES(IndAppGetSolver(app));
+  Mat       J    = IndSolverGetJacobian(IndAppGetSolver(app));
+  Vec       U = IndAppGetSolution(app), Up, Fp, Fm, e, Jc;
   PetscInt  N, lo, hi;
   PetscReal umax, h, d2 = 0, j2 = 0, nd, nj;
 
@@ -136,7 +136,7 @@ int main(int argc, char **argv)
   PetscCall(PetscStrcmp(expect, "quadratic", &quadratic));
   PetscCall(IndAppCreate(PETSC_COMM_WORLD, &app));
   PetscCall(IndAppAddBoundaryFunction(app, "top", 7, Top, &path));
-  PetscCall(SNESMonitorSet(app->solver->snes, Record, &path, NULL));
+  PetscCall(SNESMonitorSet(IndSolverGetSNES(IndAppGetSolver(app)), Record, &path, NULL));
 
   for (PetscInt phase = 0; phase < 2; ++phase)
     for (PetscInt k = 1; k <= steps[phase]; ++k) {
@@ -146,7 +146,7 @@ int main(int argc, char **argv)
 
       if (phase == 0) path.tension = tension * k / steps[0];
       else path.shear = shear * k / steps[1];
-      PetscCall(IndBCInvalidate(app->bc));
+      PetscCall(IndBCInvalidate(IndAppGetBC(app)));
       /* The path lives in the boundary function, so every step solves at load factor 1. The last
          step is not committed: its Jacobian is checked against the residual, which must still start
          from the previous step's history (after a commit every plastic point sits on the kink of
@@ -154,12 +154,12 @@ int main(int argc, char **argv)
       if (last && fd_tol >= 0) {
         IndSolveResult sr;
         PetscCall(PetscMemzero(&r, sizeof(r)));
-        PetscCall(IndSolverSolve(app->solver, 1.0, app->U, &sr));
-        PetscCall(IndSolverEvaluate(app->solver, app->U));
+        PetscCall(IndSolverSolve(IndAppGetSolver(app), 1.0, IndAppGetSolution(app), &sr));
+        PetscCall(IndSolverEvaluate(IndAppGetSolver(app), IndAppGetSolution(app)));
         r.reason    = sr.reason;
         r.newton    = sr.newton;
         r.converged = sr.converged;
-        r.plastic   = app->solver->nplastic;
+        r.plastic   = IndSolverPlasticPoints(IndAppGetSolver(app));
       } else PetscCall(IndAppSolveStep(app, 1.0, &r));
       PetscCheck(r.converged, PETSC_COMM_WORLD, PETSC_ERR_NOT_CONVERGED,
         "%s step %" PetscInt_FMT ": Newton failed (%s)", phase ? "shear" : "tension", k,

@@ -34,6 +34,14 @@ typedef struct {
 
 /* Plastic strain p reached at total axial strain eps: the root of (R(p) + H p) / E + p = eps, which
    increases with p; bisection to the last bit, independent of the return-map code under test. */
+/* Cells of this rank. */
+static PetscInt CellCount(IndApp app)
+{
+  const IndDiscLayout *L;
+  (void)IndDiscGetLayout(IndAppGetDisc(app), &L);
+  return L->ncell;
+}
+
 static PetscReal ClosedFormP(const IndMaterial *m, PetscReal eps)
 {
   const IndPlasticParams *pp = &m->plastic;
@@ -75,7 +83,7 @@ static PetscReal UniaxialUpdate(const IndMaterial *m, PetscReal eps, Uniaxial *s
 static PetscErrorCode CheckStep(IndApp app, const IndStepResult *step, void *ctx)
 {
   Check             *c = (Check *)ctx;
-  const IndMaterial *m = &app->mats->mat[0];
+  const IndMaterial *m = IndMaterialsGet(IndAppGetMaterials(app), 0);
   PetscReal          eps, p, sig, scale;
   IndCellFields      f  = {c->stress, c->strain_avg, c->p, c->back, c->yielding};
   PetscReal          es = 0, ep = 0;
@@ -94,19 +102,24 @@ static PetscErrorCode CheckStep(IndApp app, const IndStepResult *step, void *ctx
     sig   = p > 0 ? IndPlasticR(&m->plastic, p) + m->plastic.H * p : m->young * eps;
     scale = sig;
   }
-  PetscCall(DMGlobalToLocal(app->disc->dm, app->U, INSERT_VALUES, app->solver->Uloc));
-  PetscCall(IndAssemblyCellAverages(app->assembly, app->solver->Uloc, &f));
-  for (PetscInt i = 0; i < app->disc->ncell; ++i) {
+  {
+    Vec Uloc;
+    PetscCall(DMGetLocalVector(IndAppGetDM(app), &Uloc));
+    PetscCall(DMGlobalToLocal(IndAppGetDM(app), IndAppGetSolution(app), INSERT_VALUES, Uloc));
+    PetscCall(IndAssemblyCellAverages(IndAppGetAssembly(app), Uloc, &f));
+    PetscCall(DMRestoreLocalVector(IndAppGetDM(app), &Uloc));
+  }
+  for (PetscInt i = 0; i < CellCount(app); ++i) {
     for (int k = 0; k < 6; ++k) es = PetscMax(es, PetscAbsReal(c->stress[6 * i + k] - (k == 2 ? sig : 0.0)) / scale);
     ep = PetscMax(ep, PetscAbsReal(c->p[i] - p) / PetscMax(PetscAbsReal(eps), c->strain));
   }
-  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &es, 1, MPIU_REAL, MPIU_MAX, app->comm));
-  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &ep, 1, MPIU_REAL, MPIU_MAX, app->comm));
-  PetscCall(PetscPrintf(app->comm,
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &es, 1, MPIU_REAL, MPIU_MAX, IndAppGetComm(app)));
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &ep, 1, MPIU_REAL, MPIU_MAX, IndAppGetComm(app)));
+  PetscCall(PetscPrintf(IndAppGetComm(app),
     "  step %2" PetscInt_FMT " (load %.6f): strain %+.6e  expected sigma %+.10e GPa, p %.6e  max error: stress %.2e, "
     "p %.2e (relative)\n", c->checked + 1, (double)step->t, (double)eps, (double)sig, (double)p, (double)es,
     (double)ep));
-  PetscCheck(es <= c->tol && ep <= c->tol, app->comm, PETSC_ERR_NOT_CONVERGED,
+  PetscCheck(es <= c->tol && ep <= c->tol, IndAppGetComm(app), PETSC_ERR_NOT_CONVERGED,
     "Uniaxial plasticity: error stress %.3e, p %.3e above %.1e at load %g", (double)es, (double)ep, (double)c->tol,
     (double)step->t);
   c->worst_stress = PetscMax(c->worst_stress, es);
@@ -135,9 +148,9 @@ static PetscErrorCode RunCycle(IndApp app, Check *c, const PetscReal *targets, P
     for (PetscInt j = 1; j <= nseg; ++j) {
       IndStepResult r;
       c->eps = from + (targets[k] - from) * j / nseg;
-      PetscCall(IndBCInvalidate(app->bc));
+      PetscCall(IndBCInvalidate(IndAppGetBC(app)));
       PetscCall(IndAppSolveStep(app, 1.0, &r));
-      PetscCheck(r.converged, app->comm, PETSC_ERR_NOT_CONVERGED,
+      PetscCheck(r.converged, IndAppGetComm(app), PETSC_ERR_NOT_CONVERGED,
         "Cycle segment %" PetscInt_FMT " step %" PetscInt_FMT ": Newton failed (%s)", k, j,
         SNESConvergedReasons[r.reason]);
       PetscCall(CheckStep(app, &r, c));
@@ -169,9 +182,11 @@ int main(int argc, char **argv)
     for (PetscInt k = 0; k < ntargets; ++k) c.strain = PetscMax(c.strain, PetscAbsReal(targets[k]));
   } else PetscCheck(has_strain && c.strain > 0, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-uni_strain e > 0 is required");
   PetscCall(IndAppCreate(PETSC_COMM_WORLD, &app));
-  PetscCheck(app->mats->n == 1 && app->mats->mat[0].model == IND_MODEL_PLASTIC, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG,
+  PetscCheck(IndMaterialsGetCount(IndAppGetMaterials(app)) == 1 &&
+               IndMaterialsGet(IndAppGetMaterials(app), 0)->model == IND_MODEL_PLASTIC,
+             PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG,
     "Needs one elasto-plastic region");
-  n = app->disc->ncell;
+  n = CellCount(app);
   PetscCall(PetscMalloc5(6 * n, &c.stress, 6 * n, &c.strain_avg, n, &c.p, n, &c.back, n, &c.yielding));
   if (c.cyclic) {
     PetscCall(IndAppAddBoundaryFunction(app, "top", 4, Top, &c));
@@ -184,12 +199,12 @@ int main(int argc, char **argv)
     "uniaxial plasticity: %" PetscInt_FMT " steps checked (%" PetscInt_FMT " plastic, %" PetscInt_FMT " yielding in "
     "reverse), %" PetscInt_FMT " cutbacks; worst relative error stress %.3e, p %.3e (tolerance %.1e)\n", c.checked,
     c.plastic_steps, c.reverse_steps,
-                        app->path.cutbacks, (double)c.worst_stress, (double)c.worst_p, (double)c.tol));
+                        IndAppGetLoadPath(app)->cutbacks, (double)c.worst_stress, (double)c.worst_p, (double)c.tol));
   PetscCheck(c.plastic_steps > 0, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG,
     "The load never reached yield: the test checked nothing plastic");
   PetscCheck(!c.cyclic || c.reverse_steps > 0, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG,
     "The cycle never yielded in reverse: the Bauschinger branch went unchecked");
-  PetscCheck(!expect_cutbacks || app->path.cutbacks > 0, PETSC_COMM_WORLD, PETSC_ERR_PLIB,
+  PetscCheck(!expect_cutbacks || IndAppGetLoadPath(app)->cutbacks > 0, PETSC_COMM_WORLD, PETSC_ERR_PLIB,
     "Expected the load stepping to cut back, it did not");
   PetscCall(PetscFree5(c.stress, c.strain_avg, c.p, c.back, c.yielding));
   PetscCall(IndAppDestroy(&app));

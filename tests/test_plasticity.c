@@ -4,6 +4,7 @@
 #include <math.h>
 #include <string.h>
 #include "ind_plasticity.h"
+#include "ind_hardening.h"
 
 #define CHECK_TOL(name, worst, tol) \
   do { \
@@ -15,19 +16,19 @@
 /* E = 70 GPa, nu = 0.3 throughout. */
 static const PetscReal YOUNG = 70.0, POISSON = 0.3;
 
-static IndPlasticParams Law(IndHardening law, PetscReal R0, PetscReal Rs, PetscReal gamma, PetscReal h, PetscReal H)
+typedef enum { VOCE, LINEAR } Kind;
+
+static IndPlasticParams Law(Kind law, PetscReal R0, PetscReal Rs, PetscReal gamma, PetscReal h, PetscReal H)
 {
   IndPlasticParams m;
 
   memset(&m, 0, sizeof(m));
-  m.kappa     = YOUNG / (3.0 * (1.0 - 2.0 * POISSON));
-  m.mu        = YOUNG / (2.0 * (1.0 + POISSON));
-  m.hardening = law;
-  m.R0        = R0;
-  m.Rs        = Rs;
-  m.gamma     = gamma;
-  m.h         = h;
-  m.H         = H;
+  m.kappa = YOUNG / (3.0 * (1.0 - 2.0 * POISSON));
+  m.mu    = YOUNG / (2.0 * (1.0 + POISSON));
+  m.R0    = R0;
+  m.H     = H;
+  if (law == LINEAR) IndHardeningSetLinear(&m, h);
+  else IndHardeningSetVoce(&m, Rs, gamma);
   return m;
 }
 
@@ -343,7 +344,7 @@ static PetscErrorCode TestTangent(const char *name, const IndPlasticParams *m, i
    hard cases converge. */
 static PetscErrorCode TestRobustness(void)
 {
-  IndPlasticParams m = Law(IND_HARDENING_VOCE, 0.3, 0.5, 20.0, 0.0, 1.0);
+  IndPlasticParams m = Law(VOCE, 0.3, 0.5, 20.0, 0.0, 1.0);
   IndPlasticState  old, st;
   PetscReal        eps[6], sigma[6], D[36], dp, worst = 0.0;
   unsigned long long seed = 7;
@@ -374,7 +375,7 @@ static PetscErrorCode TestRobustness(void)
     "  failed return (max_iterations = 1): NOT_CONVERGED, state untouched, outputs NaN; default cap converges\n"));
 
   /* Pathological Voce: saturation within p ~ 1e-6. */
-  m = Law(IND_HARDENING_VOCE, 0.3, 0.5, 1e6, 0.0, 1.0);
+  m = Law(VOCE, 0.3, 0.5, 1e6, 0.0, 1.0);
   PetscCall(IndPlasticParamsCheck(&m, "film_", PETSC_COMM_SELF));
   for (int k = 0; k < 200; ++k) {
     RandomState(&m, &seed, 1.0 + PetscPowReal(10.0, -6.0 + 8.0 * Uniform(&seed)), &old, eps);
@@ -384,8 +385,8 @@ static PetscErrorCode TestRobustness(void)
   CHECK_TOL("Voce gamma = 1e6: returned state on the yield surface", worst, 1e-12);
 
   /* Steep Voce softening: the first Newton step overshoots the bracket, so only bisection saves it. */
-  m       = Law(IND_HARDENING_VOCE, 0.5, 0.3, 0.0, 0.0, 0.5);
-  m.gamma = 0.99 * (3.0 * m.mu + m.H) / (m.R0 - m.Rs);
+  m       = Law(VOCE, 0.5, 0.3, 0.0, 0.0, 0.5);
+  IndHardeningSetVoce(&m, 0.3, 0.99 * (3.0 * m.mu + m.H) / (m.R0 - 0.3));
   PetscCall(IndPlasticParamsCheck(&m, "film_", PETSC_COMM_SELF));
   worst = 0.0;
   for (int k = 0; k < 200; ++k) {
@@ -418,7 +419,7 @@ static PetscErrorCode TestParamsCheck(void)
 
   PetscFunctionBeginUser;
   for (int k = 0; k < ncases; ++k) {
-    IndPlasticParams m = Law(IND_HARDENING_VOCE, 0.3, 0.5, 20.0, 0.0, 1.0);
+    IndPlasticParams m = Law(VOCE, 0.3, 0.5, 20.0, 0.0, 1.0);
     PetscErrorCode   ierr;
     char            *msg = NULL;
 
@@ -427,11 +428,11 @@ static PetscErrorCode TestParamsCheck(void)
     case 1: m.kappa = -1.0; break;
     case 2: m.R0 = 0.0; break;
     case 3: m.R0 = NAN; break;
-    case 4: m.Rs = -0.1; break;
-    case 5: m.gamma = -1.0; break;
+    case 4: IndHardeningSetVoce(&m, -0.1, 20.0); break;
+    case 5: IndHardeningSetVoce(&m, 0.5, -1.0); break;
     case 6: m.H = -1.0; break;
-    case 7: m.hardening = IND_HARDENING_LINEAR; m.h = -1.0; break;
-    default: m.Rs = 0.1; m.gamma = (3.0 * m.mu + m.H) / (m.R0 - m.Rs); /* softening with a flat return equation */
+    case 7: IndHardeningSetLinear(&m, -1.0); break;
+    default: IndHardeningSetVoce(&m, 0.1, (3.0 * m.mu + m.H) / (m.R0 - 0.1)); /* softening, a flat return equation */
     }
     PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
     ierr = IndPlasticParamsCheck(&m, "film_", PETSC_COMM_SELF);
@@ -449,20 +450,20 @@ static PetscErrorCode TestParamsCheck(void)
 
 int main(int argc, char **argv)
 {
-  const IndPlasticParams voce = Law(IND_HARDENING_VOCE, 0.3, 0.5, 20.0, 0.0, 1.0);
-  const IndPlasticParams linear = Law(IND_HARDENING_LINEAR, 0.3, 0.0, 0.0, 2.0, 0.0);
-  const IndPlasticParams linear_kin = Law(IND_HARDENING_LINEAR, 0.3, 0.0, 0.0, 2.0, 5.0);
+  const IndPlasticParams voce = Law(VOCE, 0.3, 0.5, 20.0, 0.0, 1.0);
+  const IndPlasticParams linear = Law(LINEAR, 0.3, 0.0, 0.0, 2.0, 0.0);
+  const IndPlasticParams linear_kin = Law(LINEAR, 0.3, 0.0, 0.0, 2.0, 5.0);
   struct {
     const char      *name;
     IndPlasticParams m;
   } laws[] = {
     {"Voce + Prager",        voce                                              },
-    {"Voce isotropic",       Law(IND_HARDENING_VOCE, 0.3, 0.8, 50.0, 0.0, 0.0) },
+    {"Voce isotropic",       Law(VOCE, 0.3, 0.8, 50.0, 0.0, 0.0) },
     {"linear isotropic",     linear                                            },
     {"linear + Prager",      linear_kin                                        },
-    {"perfect (Rs = R0)",    Law(IND_HARDENING_VOCE, 0.3, 0.3, 20.0, 0.0, 0.0) },
-    {"perfect (linear h=0)", Law(IND_HARDENING_LINEAR, 0.3, 0.0, 0.0, 0.0, 0.0)},
-    {"mild Voce softening",  Law(IND_HARDENING_VOCE, 0.5, 0.3, 50.0, 0.0, 0.0) },
+    {"perfect (Rs = R0)",    Law(VOCE, 0.3, 0.3, 20.0, 0.0, 0.0) },
+    {"perfect (linear h=0)", Law(LINEAR, 0.3, 0.0, 0.0, 0.0, 0.0)},
+    {"mild Voce softening",  Law(VOCE, 0.5, 0.3, 50.0, 0.0, 0.0) },
     {"elastic_only",         voce                                              },
   };
   const int          nlaws = (int)(sizeof(laws) / sizeof(laws[0]));

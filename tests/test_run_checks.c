@@ -33,31 +33,30 @@ int main(int argc, char **argv)
     "-check edge|inverted|area|loading");
   PetscCall(PetscMemzero(&w, sizeof(w)));
   PetscCall(IndAppCreate(PETSC_COMM_WORLD, &app));
-  PetscCheck(!(isedge || isarea || isload) || app->contact, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG,
+  PetscCheck(!(isedge || isarea || isload) || IndAppGetContact(app), PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG,
     "-check %s needs an indenter", check);
 
   if (isarea) { /* pure: the surface's area is known at set-up */
-    const PetscReal S = app->contact->surface_area;
-    PetscCall(IndRunCheckContactArea(app->contact, 0.99 * S, text, sizeof(text)));
+    const PetscReal S = IndContactGetSurfaceArea(IndAppGetContact(app));
+    PetscCall(IndContactCheckArea(IndAppGetContact(app), 0.99 * S, text, sizeof(text)));
     if (text[0]) failures++;
-    PetscCall(IndRunCheckContactArea(app->contact, 1.01 * S, text, sizeof(text)));
+    PetscCall(IndContactCheckArea(IndAppGetContact(app), 1.01 * S, text, sizeof(text)));
     fired = text[0] ? PETSC_TRUE : PETSC_FALSE;
     PetscCall(PetscPrintf(PETSC_COMM_WORLD, "surface area %g nm^2 (symmetry %g); at 1.01 of it: %s\n", (double)S,
-      (double)app->contact->symmetry, text[0] ? text : "(no warning)"));
+      (double)IndContactGetSymmetry(IndAppGetContact(app)), text[0] ? text : "(no warning)"));
   } else {
-    while (app->path.t < 1 - 1e-12) {
-      const PetscReal t = IndLoadPathTarget(&app->path);
-      PetscCall(IndAppSolveStep(app, t, &r));
+    while (IndAppGetLoadPath(app)->t < 1 - 1e-12) {
+      const PetscReal t = IndLoadPathTarget(IndAppGetLoadPath(app));
+      PetscCall(IndAppStep(app, &r));
       PetscCheck(r.converged, PETSC_COMM_WORLD, PETSC_ERR_NOT_CONVERGED, "step to t = %g did not converge (%s)",
         (double)t, r.why);
-      IndLoadPathAccept(&app->path, r.newton);
       if (isedge) {
-        PetscCall(IndRunCheckContactEdge(app->contact, r.depth, text, sizeof(text)));
-        if (text[0]) PetscCall(IndWarningsAdd(app->comm, &w, "contact_edge", PETSC_TRUE, text));
+        PetscCall(IndContactCheckEdge(IndAppGetContact(app), r.depth, text, sizeof(text)));
+        if (text[0]) PetscCall(IndWarningsAdd(IndAppGetComm(app), &w, "contact_edge", PETSC_TRUE, text));
       }
       if (isinv) {
         PetscCall(IndRunCheckInverted(app, "at the end of loading", text, sizeof(text)));
-        if (text[0]) PetscCall(IndWarningsAdd(app->comm, &w, "inverted_cells", PETSC_TRUE, text));
+        if (text[0]) PetscCall(IndWarningsAdd(IndAppGetComm(app), &w, "inverted_cells", PETSC_TRUE, text));
       }
       if (isload) {
         PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
@@ -72,13 +71,13 @@ int main(int argc, char **argv)
           break;
         }
       }
-      if (app->contact) PetscCall(PetscPrintf(PETSC_COMM_WORLD,
+      if (IndAppGetContact(app)) PetscCall(PetscPrintf(PETSC_COMM_WORLD,
         "step to depth %g nm: %" PetscInt_FMT " contact nodes\n", (double)r.depth, r.contact.contact));
     }
     if (isedge || isinv) fired = w.n > 0 ? PETSC_TRUE : PETSC_FALSE;
     /* once per kind: the same warning again is not recorded twice */
     if (w.n) {
-      PetscCall(IndWarningsAdd(app->comm, &w, w.key[0], PETSC_FALSE, "again"));
+      PetscCall(IndWarningsAdd(IndAppGetComm(app), &w, w.key[0], PETSC_FALSE, "again"));
       if (w.n != 1) failures++;
     }
   }

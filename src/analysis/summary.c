@@ -1,8 +1,8 @@
+#include "summary_impl.h"
 #include <stdio.h>
 #include "ind_summary.h"
 #include "ind_rundir.h"
 #include "ind_version.h"
-#include "ind_runchecks.h"
 #include "ind_options.h"
 
 PetscErrorCode IndOPParamsSetFromOptions(MPI_Comm comm, IndOPParams *p)
@@ -81,6 +81,74 @@ PetscErrorCode IndSummaryAddPoint(IndSummary s, const IndCurvePoint *p)
     s->cap *= 2;
   }
   s->pts[s->n++] = *p;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode IndSummaryGetPoints(IndSummary s, PetscInt *n, const IndCurvePoint **pts)
+{
+  PetscFunctionBeginUser;
+  *n   = s->n;
+  *pts = s->pts;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+IND_GETTER(const IndOPParams *, IndSummaryGetOPParams, IndSummary, &o->op)
+
+#define CURVE_WIDTH 16 /* reals per IndCurvePoint in the state */
+
+static void PackPoint(const IndCurvePoint *p, PetscReal *r)
+{
+  const PetscReal v[CURVE_WIDTH] = {(PetscReal)p->step,    p->t,        p->depth,          p->load,
+                                    (PetscReal)p->contact, (PetscReal)p->stick, (PetscReal)p->slip,
+                                    (PetscReal)p->newton,  (PetscReal)p->outer, (PetscReal)p->linear,
+                                    (PetscReal)p->cutbacks, p->penetration, p->area, p->pileup, p->deepest,
+                                    (PetscReal)p->seconds};
+  for (int k = 0; k < CURVE_WIDTH; ++k) r[k] = v[k];
+}
+
+static void UnpackPoint(const PetscReal *r, IndCurvePoint *p)
+{
+  p->step        = (PetscInt)r[0];
+  p->t           = r[1];
+  p->depth       = r[2];
+  p->load        = r[3];
+  p->contact     = (PetscInt)r[4];
+  p->stick       = (PetscInt)r[5];
+  p->slip        = (PetscInt)r[6];
+  p->newton      = (PetscInt)r[7];
+  p->outer       = (PetscInt)r[8];
+  p->linear      = (PetscInt)r[9];
+  p->cutbacks    = (PetscInt)r[10];
+  p->penetration = r[11];
+  p->area        = r[12];
+  p->pileup      = r[13];
+  p->deepest     = r[14];
+  p->seconds     = r[15];
+}
+
+PetscErrorCode IndSummaryState(void *obj, IndStateFile f)
+{
+  IndSummary s = (IndSummary)obj;
+  PetscReal *curve = NULL;
+  PetscInt   n     = CURVE_WIDTH * s->n;
+
+  PetscFunctionBeginUser;
+  if (!IndStateReading(f)) {
+    PetscCall(PetscMalloc1(n + 1, &curve));
+    for (PetscInt i = 0; i < s->n; ++i) PackPoint(&s->pts[i], curve + CURVE_WIDTH * i);
+  }
+  PetscCall(IndStateRealArray(f, "curve", &n, &curve));
+  if (IndStateReading(f)) {
+    PetscCheck(n % CURVE_WIDTH == 0, s->comm, PETSC_ERR_FILE_UNEXPECTED, "The state's curve holds %" PetscInt_FMT
+               " values, not %d per point", n, CURVE_WIDTH);
+    s->n = 0;
+    for (PetscInt i = 0; i < n / CURVE_WIDTH; ++i) {
+      IndCurvePoint p;
+      UnpackPoint(curve + CURVE_WIDTH * i, &p);
+      PetscCall(IndSummaryAddPoint(s, &p));
+    }
+  }
+  PetscCall(PetscFree(curve));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -181,12 +249,12 @@ PetscErrorCode IndSummaryFinish(IndSummary s, const IndIndenter *ind, const IndR
   else IndOPFromArea(&s->op, &r, pmax->area, &Hs, &Ers, &Es);
   if (!code && info->contact) {
     /* A contact of a few nodes leaves the unloading a staircase of nodes letting go: its fit is noise. */
-    IndRunCheckContactResolved(info->contact, pmax->contact, s->min_contact_nodes, why, sizeof(why));
+    IndContactCheckResolved(info->contact, pmax->contact, s->min_contact_nodes, why, sizeof(why));
     if (why[0]) code = 4;
   }
   if (!code && info->contact) { /* resolved: does A(h_c) fit on the modelled surface? */
     char text[IND_WARNING_LEN];
-    PetscCall(IndRunCheckContactArea(info->contact, r.A, text, sizeof(text)));
+    PetscCall(IndContactCheckArea(info->contact, r.A, text, sizeof(text)));
     if (text[0]) PetscCall(IndWarningsAdd(s->comm, info->warnings, "op_area", print, text));
   }
   PetscCall(PetscFree2(h, P));

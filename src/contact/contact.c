@@ -1,6 +1,6 @@
+#include "contact_impl.h"
 #include "contact_node.h"
 
-const char *const IndUzawaTypes[] = {"fixed_point", "newton", "IndUzawa", "IND_UZAWA_", NULL};
 
 static const PetscReal deg = PETSC_PI / 180.0;
 
@@ -136,7 +136,8 @@ static void FaceAngles(const PetscInt *voff, PetscInt nv, const PetscReal *vx, P
    current positions X + u. */
 static PetscErrorCode SurfaceNodes(IndMesh mesh, IndDisc disc, const char surface[], Vec Uloc, Vec G)
 {
-  DM                 dm = disc->dm, cdm;
+  DM                 dm, cdm;
+  PetscInt           degree;
   PetscSection       s, cs;
   DMLabel            label;
   IS                 faces;
@@ -146,6 +147,12 @@ static PetscErrorCode SurfaceNodes(IndMesh mesh, IndDisc disc, const char surfac
   PetscInt           vStart, vEnd, eStart, eEnd;
 
   PetscFunctionBeginUser;
+  PetscCall(IndDiscGetDM(disc, &dm));
+  {
+    const IndDiscLayout *L;
+    PetscCall(IndDiscGetLayout(disc, &L));
+    degree = L->degree;
+  }
   PetscCall(IndMeshGetRegionLabel(mesh, surface, 2, "-contact_surface", &label));
   PetscCall(DMPlexGetDepthStratum(dm, 0, &vStart, &vEnd));
   PetscCall(DMPlexGetDepthStratum(dm, 1, &eStart, &eEnd));
@@ -190,7 +197,7 @@ static PetscErrorCode SurfaceNodes(IndMesh mesh, IndDisc disc, const char surfac
       for (PetscInt k = 0; k < nc; ++k) vx[k] = PetscRealPart(xc[k]) + uv[k];
       PetscCall(DMPlexVecRestoreClosure(cdm, cs, X, f[i], &nc, &xc));
       FaceAngles(voff, nv, vx, a);
-      PetscCall(FaceAreas(dm, s, f[i], vx, nc / 3, disc->degree, a));
+      PetscCall(FaceAreas(dm, s, f[i], vx, nc / 3, degree, a));
     }
     PetscCall(ISRestoreIndices(faces, &f));
     PetscCall(ISDestroy(&faces));
@@ -204,20 +211,20 @@ static PetscErrorCode SurfaceNodes(IndMesh mesh, IndDisc disc, const char surfac
 }
 
 /* A symmetry plane through the indenter's axis halves the model: each doubles the load. */
-static PetscReal SymmetryFactor(IndBC bc, const IndIndenter *ind)
+static PetscReal SymmetryFactor(PetscInt nspec, const IndBCSpec *spec, const IndIndenter *ind)
 {
   PetscReal f = 1;
-  for (PetscInt k = 0; k < bc->nspec; ++k)
-    if (IndContactPlaneThroughAxis(&bc->spec[k], ind)) f *= 2;
+  for (PetscInt k = 0; k < nspec; ++k)
+    if (IndContactPlaneThroughAxis(&spec[k], ind)) f *= 2;
   return f;
 }
 
 /* Bit c set when a symmetry plane normal to axis c passes through the indenter's axis. */
-static PetscInt MirrorPlanes(IndBC bc, const IndIndenter *ind)
+static PetscInt MirrorPlanes(PetscInt nspec, const IndBCSpec *spec, const IndIndenter *ind)
 {
   PetscInt mask = 0;
-  for (PetscInt k = 0; k < bc->nspec; ++k) {
-    const int c = IndContactPlaneThroughAxis(&bc->spec[k], ind);
+  for (PetscInt k = 0; k < nspec; ++k) {
+    const int c = IndContactPlaneThroughAxis(&spec[k], ind);
     if (c) mask |= 1 << (c - 1);
   }
   return mask;
@@ -237,16 +244,17 @@ int IndContactPlaneThroughAxis(const IndBCSpec *spec, const IndIndenter *ind)
 /* A symmetry plane through the axis halves the indenter too: it must be one of the pyramid's mirror
    planes, which contain its axis at the azimuths rotation + k 180/nfaces degrees. A plane normal to y
    runs along azimuth 0, one normal to x along 90. */
-static PetscErrorCode CheckRotation(MPI_Comm comm, IndBC bc, const IndIndenter *ind, PetscReal rotation)
+static PetscErrorCode CheckRotation(MPI_Comm comm, PetscInt nspec, const IndBCSpec *spec, const IndIndenter *ind,
+  PetscReal rotation)
 {
   const PetscReal period = ind->nfaces ? 180.0 / ind->nfaces : 0;
   PetscInt        planes = 0;
 
   PetscFunctionBeginUser;
   if (!ind->nfaces) PetscFunctionReturn(PETSC_SUCCESS); /* axisymmetric */
-  for (PetscInt k = 0; k < bc->nspec; ++k) planes += IndContactPlaneThroughAxis(&bc->spec[k], ind) ? 1 : 0;
-  for (PetscInt k = 0; k < bc->nspec; ++k) {
-    const int       c     = IndContactPlaneThroughAxis(&bc->spec[k], ind);
+  for (PetscInt k = 0; k < nspec; ++k) planes += IndContactPlaneThroughAxis(&spec[k], ind) ? 1 : 0;
+  for (PetscInt k = 0; k < nspec; ++k) {
+    const int       c     = IndContactPlaneThroughAxis(&spec[k], ind);
     const PetscReal along = c == 2 ? 0.0 : 90.0;
     const char     *hint;
     PetscReal       r;
@@ -260,8 +268,8 @@ static PetscErrorCode CheckRotation(MPI_Comm comm, IndBC bc, const IndIndenter *
     PetscCheck(r < 1e-6 || period - r < 1e-6, comm, PETSC_ERR_ARG_INCOMP,
                "-indenter_rotation %.6g degrees: the %s indenter is not mirror-symmetric about the symmetry plane "
                "'%s' (%c = %.6g nm, through its axis), so this %s model does not represent it; %s",
-               (double)rotation, IndIndenterTypes[ind->type], bc->spec[k].label, c == 2 ? 'y' : 'x',
-               (double)bc->spec[k].plane, planes > 1 ? "quarter" : "half", hint);
+               (double)rotation, IndIndenterTypes[ind->type], spec[k].label, c == 2 ? 'y' : 'x',
+               (double)spec[k].plane, planes > 1 ? "quarter" : "half", hint);
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -270,15 +278,17 @@ static PetscErrorCode CheckRotation(MPI_Comm comm, IndBC bc, const IndIndenter *
    symmetry planes, where the body goes on in the mirror image), the lowest point of the mesh and the
    surface's projected area (times the symmetry factor): what the run's checks compare with
    (run_checks.c). */
-static PetscErrorCode SurfaceEdgeAndSize(IndContact c, IndMesh mesh, IndBC bc)
+static PetscErrorCode SurfaceEdgeAndSize(IndContact c, PetscInt nspec, const IndBCSpec *spec)
 {
+  DM                 dm;
   Vec                X;
   const PetscScalar *x;
   PetscInt           n, counts[2] = {0, 0};
   PetscReal          zmin = PETSC_MAX_REAL, scale = 0, area = 0;
 
   PetscFunctionBeginUser;
-  PetscCall(DMGetCoordinatesLocal(mesh->dm, &X));
+  PetscCall(IndDiscGetDM(c->disc, &dm));
+  PetscCall(DMGetCoordinatesLocal(dm, &X));
   PetscCall(VecGetLocalSize(X, &n));
   PetscCall(VecGetArrayRead(X, &x));
   for (PetscInt k = 0; k < n; k += 3) {
@@ -297,11 +307,11 @@ static PetscErrorCode SurfaceEdgeAndSize(IndContact c, IndMesh mesh, IndBC bc)
       c->extent[2 * d + 1] = PetscMax(c->extent[2 * d + 1], c->X[3 * i + d]);
     }
     area += c->A[i];
-    for (PetscInt k = 0; k < bc->nspec && c->edge[i]; ++k) {
+    for (PetscInt k = 0; k < nspec && c->edge[i]; ++k) {
       PetscBool sym;
-      PetscCall(PetscStrcmp(bc->spec[k].option, "-bc_symmetry", &sym));
+      PetscCall(PetscStrcmp(spec[k].option, "-bc_symmetry", &sym));
       for (int d = 0; d < 3 && sym; ++d)
-        if (bc->spec[k].mask == (1 << d) && PetscAbsReal(c->X[3 * i + d] - bc->spec[k].plane) <= 1e-9 * (1 + scale))
+        if (spec[k].mask == (1 << d) && PetscAbsReal(c->X[3 * i + d] - spec[k].plane) <= 1e-9 * (1 + scale))
           c->edge[i] = PETSC_FALSE;
     }
     counts[0] += c->edge[i] ? 1 : 0;
@@ -321,9 +331,13 @@ static PetscErrorCode SurfaceEdgeAndSize(IndContact c, IndMesh mesh, IndBC bc)
 
 PetscErrorCode IndContactCreate(IndMesh mesh, IndDisc disc, IndBC bc, IndContact *out)
 {
-  IndContact         c;
-  MPI_Comm           comm = PetscObjectComm((PetscObject)mesh->dm);
-  IndIndenter        ind;
+  IndContact           c;
+  DM                   dm;
+  MPI_Comm             comm;
+  const IndDiscLayout *L;
+  PetscInt             nspec;
+  const IndBCSpec     *spec;
+  IndIndenter          ind;
   PetscBool          has_type, has_radius, has_surface, has_sym, has_axis, has_rounding;
   PetscReal          angle = 0, rotation = 0, radius = 0, symmetry = 0;
   PetscInt           naxis = 2;
@@ -334,6 +348,10 @@ PetscErrorCode IndContactCreate(IndMesh mesh, IndDisc disc, IndBC bc, IndContact
 
   PetscFunctionBeginUser;
   *out = NULL;
+  PetscCall(IndDiscGetDM(disc, &dm));
+  PetscCall(IndDiscGetLayout(disc, &L));
+  PetscCall(IndBCGetSpecs(bc, &nspec, &spec));
+  comm = PetscObjectComm((PetscObject)dm);
   PetscCall(PetscMemzero(&ind, sizeof(ind)));
   PetscOptionsBegin(comm, NULL, IND_TITLE "Indenter (-indenter_type)", "Contact");
   PetscCall(IndOptionsEnum("-indenter_type",
@@ -344,7 +362,6 @@ PetscErrorCode IndContactCreate(IndMesh mesh, IndDisc disc, IndBC bc, IndContact
 
   PetscCall(PetscCalloc1(1, &c));
   c->comm      = comm;
-  c->variant   = IND_UZAWA_NEWTON;
   c->rtol      = 1e-6;
   c->pen_rtol  = 1e-4;
   c->monitor   = PETSC_FALSE;
@@ -366,14 +383,14 @@ PetscErrorCode IndContactCreate(IndMesh mesh, IndDisc disc, IndBC bc, IndContact
   PetscCall(IndOptionsString("-contact_surface", "Surface whose nodes may touch the indenter", "surface", NULL, surface,
     surface, sizeof(surface), NULL));
   PetscCall(IndOptionsReal("-contact_friction", "Coulomb friction coefficient", "", NULL, c->mu, &c->mu, NULL));
-  PetscCall(IndOptionsEnum("-contact_uzawa",
-    "Contact algorithm: newton (semi-smooth Newton, reactions from the residual) or fixed_point (reactions frozen in "
-    "each Newton solve, updated between them)", IndUzawaTypes, (PetscEnum)c->variant, (PetscEnum *)&c->variant, NULL));
-  /* Newton: rho sets which nodes are tried active and scales their rows, not the solution; the
-     stiffness diagonal keeps those rows as well conditioned as the rest. The fixed point diverges
-     once rho exceeds 2 / (largest eigenvalue of the contact compliance), about the diagonal. */
-  c->rho_scale = c->variant == IND_UZAWA_NEWTON ? 1.0 : 0.3;
-  c->max_outer = c->variant == IND_UZAWA_NEWTON ? 20 : 200;
+  {
+    char coupling[IND_NAME_LEN];
+    PetscCall(IndOptionsType("-contact_uzawa",
+      "Contact algorithm: newton (semi-smooth Newton, reactions from the residual) or fixed_point (reactions frozen in "
+      "each Newton solve, updated between them)", &IndContactCouplingRegistry, "newton", coupling, sizeof(coupling),
+      NULL));
+    PetscCall(IndContactSetCoupling(c, coupling)); /* and its defaults of rho and of the outer iterations */
+  }
   PetscCall(IndOptionsReal("-contact_rho_scale", "rho = scale * mean stiffness diagonal of each contact node", "",
     "1 newton, 0.3 fixed_point", c->rho_scale, &c->rho_scale, NULL));
   PetscCall(IndOptionsReal("-contact_uzawa_rtol", "Outer loop: relative change of the reactions", "", NULL, c->rtol,
@@ -423,7 +440,7 @@ PetscErrorCode IndContactCreate(IndMesh mesh, IndDisc disc, IndBC bc, IndContact
   /* Consistent nodal forces of a pressure vanish at the corner nodes of a 6-node triangle, so a
      node-to-surface contact cannot represent a smooth pressure there (and negative ones would be
      needed by 20-node serendipity faces). Q2 Lagrange faces have positive weights. */
-  PetscCheck(!(disc->simplex && disc->degree == 2), comm, PETSC_ERR_SUP,
+  PetscCheck(!(L->simplex && L->degree == 2), comm, PETSC_ERR_SUP,
     "Contact on P2 tetrahedra is not supported: the consistent nodal forces of a pressure are zero at the corners of "
     "their 6-node faces. Use P1 tetrahedra or Q1/Q2 hexahedra for the contact region");
 
@@ -433,7 +450,7 @@ PetscErrorCode IndContactCreate(IndMesh mesh, IndDisc disc, IndBC bc, IndContact
     PetscCall(IndMeshGetRegionLabel(mesh, surface, 2, "-contact_surface", &label));
     if (!IndHelpListing()) PetscCall(IndMeshCheckRegionNotEmpty(mesh, surface, 2, "-contact_surface"));
   }
-  PetscCall(DMCreateGlobalVector(disc->dm, &G));
+  PetscCall(DMCreateGlobalVector(dm, &G));
   PetscCall(SurfaceNodes(mesh, disc, surface, NULL, G));
   PetscCall(IndDiscNodeCoordinates(disc, &nodes));
   PetscCall(VecGetLocalSize(G, &n));
@@ -470,14 +487,14 @@ PetscErrorCode IndContactCreate(IndMesh mesh, IndDisc disc, IndBC bc, IndContact
   PetscCall(VecDestroy(&nodes));
   PetscCall(VecDestroy(&G));
   c->indenter = ind;
-  c->symmetry = has_sym ? symmetry : SymmetryFactor(bc, &ind);
-  c->mirror   = MirrorPlanes(bc, &ind);
+  c->symmetry = has_sym ? symmetry : SymmetryFactor(nspec, spec, &ind);
+  c->mirror   = MirrorPlanes(nspec, spec, &ind);
   c->axis_c[0] = ind.axis[0];
   c->axis_c[1] = ind.axis[1];
-  if (!IndHelpListing()) PetscCall(CheckRotation(comm, bc, &ind, rotation));
-  PetscCall(SurfaceEdgeAndSize(c, mesh, bc));
+  if (!IndHelpListing()) PetscCall(CheckRotation(comm, nspec, spec, &ind, rotation));
   c->mesh     = mesh;
   c->disc     = disc;
+  PetscCall(SurfaceEdgeAndSize(c, nspec, spec));
   PetscCall(PetscStrncpy(c->surface, surface, sizeof(c->surface)));
   *out        = c;
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -498,7 +515,7 @@ PetscErrorCode IndContactDestroy(IndContact *c)
 /* Before solving: the depth must stay inside the body, and the indenter must reach the surface. The
    body moves only where something pushes it; with no boundary displacement prescribed, a surface the
    rigid indenter does not reach at full depth in its undeformed position is never touched. */
-static PetscErrorCode CheckReach(IndContact c, IndBC bc, PetscReal depth_max)
+static PetscErrorCode CheckReach(IndContact c, PetscInt nspec, const IndBCSpec *spec, PetscReal depth_max)
 {
   const IndIndenter *ind    = &c->indenter;
   const PetscReal    lowest = ind->surface - depth_max;
@@ -530,8 +547,8 @@ static PetscErrorCode CheckReach(IndContact c, IndBC bc, PetscReal depth_max)
                "above the surface (its default is the highest node)",
                (double)-g0, c->surface, (double)ind->surface, (double)c->top);
   }
-  for (PetscInt k = 0; k < bc->nspec; ++k)
-    if (bc->spec[k].fn || bc->spec[k].value[0] != 0 || bc->spec[k].value[1] != 0 || bc->spec[k].value[2] != 0)
+  for (PetscInt k = 0; k < nspec; ++k)
+    if (spec[k].fn || spec[k].value[0] != 0 || spec[k].value[1] != 0 || spec[k].value[2] != 0)
       moves = PETSC_TRUE;
   if (moves) PetscFunctionReturn(PETSC_SUCCESS); /* decided after loading instead (run_checks.c) */
   {
@@ -558,8 +575,13 @@ PetscErrorCode IndContactSetUp(IndContact c, IndBC bc, Mat K, PetscReal depth_ma
   Vec                d;
   const PetscScalar *v;
   PetscScalar       *m;
+  PetscInt           nrows, nspec;
+  const PetscInt    *lrows;
+  const IndBCSpec   *spec;
 
   PetscFunctionBeginUser;
+  PetscCall(IndBCGetRows(bc, &nrows, NULL, &lrows));
+  PetscCall(IndBCGetSpecs(bc, &nspec, &spec));
   PetscCall(MatCreateVecs(K, &d, NULL));
   PetscCall(MatGetDiagonal(K, d));
   PetscCall(VecGetArrayRead(d, &v));
@@ -568,7 +590,7 @@ PetscErrorCode IndContactSetUp(IndContact c, IndBC bc, Mat K, PetscReal depth_ma
   PetscCall(VecRestoreArrayRead(d, &v));
   PetscCall(VecZeroEntries(d));
   PetscCall(VecGetArray(d, &m));
-  for (PetscInt k = 0; k < bc->nrows; ++k) m[bc->lrows[k]] = 1.0;
+  for (PetscInt k = 0; k < nrows; ++k) m[lrows[k]] = 1.0;
   for (PetscInt i = 0; i < c->n; ++i) {
     c->fixed[i] = 0;
     for (int dd = 0; dd < 3; ++dd)
@@ -578,23 +600,15 @@ PetscErrorCode IndContactSetUp(IndContact c, IndBC bc, Mat K, PetscReal depth_ma
   PetscCall(VecDestroy(&d));
   c->pen_atol = c->pen_rtol * depth_max;
   c->indenter.rounding = c->rounding >= 0 ? c->rounding : 1e-4 * depth_max;
-  if (!IndHelpListing()) PetscCall(CheckReach(c, bc, depth_max));
+  if (!IndHelpListing()) PetscCall(CheckReach(c, nspec, spec, depth_max));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 PetscErrorCode IndContactResidual(IndContact c, Vec U, Vec F)
 {
-  PetscScalar *f;
-
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(IndLog.contact, 0, 0, 0, 0));
-  if (c->variant == IND_UZAWA_NEWTON) PetscCall(IndContactNewtonResidual(c, U, F));
-  else {
-    PetscCall(VecGetArray(F, &f));
-    for (PetscInt i = 0; i < c->n; ++i)
-      for (int d = 0; d < 3; ++d) f[c->row[i] + d] -= c->R[3 * i + d];
-    PetscCall(VecRestoreArray(F, &f));
-  }
+  PetscCall(c->ops.residual(c, U, F));
   PetscCall(PetscLogEventEnd(IndLog.contact, 0, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -602,7 +616,7 @@ PetscErrorCode IndContactResidual(IndContact c, Vec U, Vec F)
 PetscErrorCode IndContactJacobian(IndContact c, Vec U, Mat J, Vec Fd)
 {
   PetscFunctionBeginUser;
-  if (c->variant == IND_UZAWA_NEWTON) PetscCall(IndContactNewtonJacobian(c, U, J, Fd));
+  if (c->ops.jacobian) PetscCall(c->ops.jacobian(c, U, J, Fd));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -610,7 +624,7 @@ PetscErrorCode IndContactJacobian(IndContact c, Vec U, Mat J, Vec Fd)
    frozen reaction of the last outer update (fixed point). */
 static const PetscReal *Multiplier(IndContact c, PetscInt i)
 {
-  return (c->variant == IND_UZAWA_NEWTON ? c->L : c->R) + 3 * i;
+  return (c->ops.residual_multipliers ? c->L : c->R) + 3 * i;
 }
 
 PetscErrorCode IndContactSetCurrentAreas(IndContact c, PetscBool current)
@@ -624,11 +638,12 @@ PetscErrorCode IndContactSetCurrentAreas(IndContact c, PetscBool current)
    of the surface's vertices (finite strain: the area that carries the load is the deformed one). */
 static PetscErrorCode CurrentAreas(IndContact c, Vec U)
 {
-  DM                 dm = c->disc->dm;
+  DM                 dm;
   Vec                Uloc, G;
   const PetscScalar *g;
 
   PetscFunctionBeginUser;
+  PetscCall(IndDiscGetDM(c->disc, &dm));
   PetscCall(DMGetLocalVector(dm, &Uloc));
   PetscCall(DMGetGlobalVector(dm, &G));
   PetscCall(DMGlobalToLocal(dm, U, INSERT_VALUES, Uloc));
@@ -657,7 +672,7 @@ PetscErrorCode IndContactUpdate(IndContact c, Vec U, IndContactSummary *sum)
     IndContactNodeSolve(c, i, u + c->row[i], Multiplier(c, i), &ns);
     for (int d = 0; d < 3; ++d) {
       /* A component held by a boundary condition is the support's (Newton leaves its multiplier 0) */
-      if (!(c->variant == IND_UZAWA_NEWTON && c->fixed[i] & (1 << d))) {
+      if (!(c->ops.residual_multipliers && c->fixed[i] & (1 << d))) {
         red[0] += PetscSqr(ns.f[d] - Multiplier(c, i)[d]);
         red[1] += PetscSqr(ns.f[d]);
       }
@@ -685,7 +700,7 @@ PetscErrorCode IndContactUpdate(IndContact c, Vec U, IndContactSummary *sum)
   /* Newton with every node open: their rows were the equilibrium rows, which Newton has solved, so the
      contact is converged (a body strained by its boundary, which the indenter does not touch, left the
      relative change at 1 for ever). */
-  if (c->variant == IND_UZAWA_NEWTON && red[1] == 0 && cnt[IND_CONTACT_STICK] + cnt[IND_CONTACT_SLIP] == 0)
+  if (c->ops.residual_multipliers && red[1] == 0 && cnt[IND_CONTACT_STICK] + cnt[IND_CONTACT_SLIP] == 0)
     sum->change = 0;
   sum->mismatch    = PetscSqrtReal(red[0]);
   sum->load        = c->symmetry * red[2];
@@ -738,10 +753,7 @@ PetscErrorCode IndContactSetIndenterPosition(IndContact c, PetscReal depth, cons
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscReal IndContactGetDepth(IndContact c)
-{
-  return c->indenter.depth;
-}
+IND_GETTER(PetscReal, IndContactGetDepth, IndContact, o->indenter.depth)
 
 PetscErrorCode IndContactSetDepth(IndContact c, PetscReal depth)
 {
@@ -783,3 +795,63 @@ PetscErrorCode IndContactNodalFields(IndContact c, Vec G)
   PetscCall(VecRestoreArray(G, &g));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
+
+PetscErrorCode IndContactUnloadingRows(IndContact c, Vec X, PetscInt *n, PetscInt rows[])
+{
+  PetscScalar *x;
+
+  PetscFunctionBeginUser;
+  PetscCall(VecGetArray(X, &x));
+  for (PetscInt i = 0; i < c->n; ++i) {
+    if (c->status[i] == IND_CONTACT_OPEN) continue;
+    for (int d = 0; d < 3; ++d) {
+      if (c->fixed[i] & (1 << d) || (d < 2 && c->status[i] == IND_CONTACT_SLIP)) continue;
+      rows[(*n)++]     = c->grow[i] + d;
+      x[c->row[i] + d] = d == 2 ? 1.0 : 0.0;
+    }
+  }
+  PetscCall(VecRestoreArray(X, &x));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode IndContactActiveForce(IndContact c, Vec F, PetscReal *Fz)
+{
+  const PetscScalar *f;
+  PetscReal          sum = 0;
+
+  PetscFunctionBeginUser;
+  PetscCall(VecGetArrayRead(F, &f));
+  for (PetscInt i = 0; i < c->n; ++i)
+    if (c->status[i] != IND_CONTACT_OPEN) sum += PetscRealPart(f[c->row[i] + 2]);
+  PetscCall(VecRestoreArrayRead(F, &f));
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &sum, 1, MPIU_REAL, MPIU_SUM, c->comm));
+  *Fz = c->symmetry * sum;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+IND_GETTER(PetscInt, IndContactGetSize, IndContact, o->n)
+IND_GETTER(PetscReal, IndContactGetSymmetry, IndContact, o->symmetry)
+IND_GETTER(const IndIndenter *, IndContactGetIndenter, IndContact, &o->indenter)
+IND_GETTER(PetscReal, IndContactGetCommittedDepth, IndContact, o->depth_c)
+IND_GETTER(MPI_Comm, IndContactGetComm, IndContact, o->comm)
+
+PetscErrorCode IndContactGetSurface(IndContact c, const char **name, PetscReal extent[4])
+{
+  PetscFunctionBeginUser;
+  if (name) *name = c->surface;
+  if (extent) PetscCall(PetscArraycpy(extent, c->extent, 4));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode IndContactGetNodes(IndContact c, IndContactNodes *v)
+{
+  PetscFunctionBeginUser;
+  v->n      = c->n;
+  v->X      = c->X;
+  v->R      = c->R;
+  v->A      = c->A;
+  v->status = c->status;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+IND_GETTER(PetscReal, IndContactGetSurfaceArea, IndContact, o->surface_area)

@@ -1,3 +1,4 @@
+#include "contact_impl.h"
 #include "contact_node.h"
 
 /* Semi-smooth Newton for the contact (doc/theory.md section 2): the reaction of a contact node is not a
@@ -14,7 +15,7 @@
    active; the solution does not depend on it. Components held by a boundary condition carry the
    support's reaction, not the indenter's, and are left out of lambda. */
 
-PetscErrorCode IndContactNewtonResidual(IndContact c, Vec U, Vec F)
+static PetscErrorCode Residual(IndContact c, Vec U, Vec F)
 {
   const PetscScalar *u;
   PetscScalar       *f;
@@ -48,12 +49,14 @@ static PetscBool LocalCurrent(IndContact c, const PetscScalar *u)
   return PETSC_TRUE;
 }
 
-PetscErrorCode IndContactNewtonCurrent(IndContact c, Vec U, PetscBool *current)
+PetscErrorCode IndContactMultipliersCurrent(IndContact c, Vec U, PetscBool *current)
 {
   const PetscScalar *u;
   PetscMPIInt        same;
 
   PetscFunctionBeginUser;
+  *current = PETSC_TRUE;
+  if (!c->ops.residual_multipliers) PetscFunctionReturn(PETSC_SUCCESS); /* frozen between solves */
   PetscCall(VecGetArrayRead(U, &u));
   same = LocalCurrent(c, u) ? 1 : 0;
   PetscCall(VecRestoreArrayRead(U, &u));
@@ -94,7 +97,7 @@ PetscErrorCode IndContactModelLoad(IndContact c, PetscReal *load)
   PetscReal sum = 0;
 
   PetscFunctionBeginUser;
-  PetscCheck(c->variant == IND_UZAWA_NEWTON, c->comm, PETSC_ERR_SUP,
+  PetscCheck(c->ops.residual_multipliers, c->comm, PETSC_ERR_SUP,
              "The load of the residual needs -contact_uzawa newton");
   for (PetscInt i = 0; i < c->n; ++i)
     if (!(c->fixed[i] & 4)) sum -= c->L[3 * i + 2];
@@ -115,7 +118,7 @@ PetscErrorCode IndContactLoadRows(IndContact c, Vec e)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode IndContactNewtonJacobian(IndContact c, Vec U, Mat J, Vec Fd)
+static PetscErrorCode Jacobian(IndContact c, Vec U, Mat J, Vec Fd)
 {
   const PetscScalar *u;
   PetscScalar       *fd = NULL;
@@ -199,5 +202,33 @@ PetscErrorCode IndContactNewtonJacobian(IndContact c, Vec U, Mat J, Vec Fd)
   PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));
   PetscCall(PetscLogEventEnd(IndLog.contact, 0, 0, 0, 0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Newton met its tolerances without a step: another outer iteration would change nothing. */
+static PetscErrorCode AfterOuter(IndContact c, PetscInt its, const IndContactSummary *r, PetscBool *stuck,
+                                 char why[], size_t len)
+{
+  PetscFunctionBeginUser;
+  *stuck = its == 0 ? PETSC_TRUE : PETSC_FALSE;
+  if (*stuck)
+    PetscCall(PetscSNPrintf(why, len,
+      "contact: reaction change %.2e (-contact_uzawa_rtol %.1e), penetration %.2e nm (limit %.2e) at Newton's "
+      "tolerances: tighten -snes_rtol or -snes_atol", (double)r->change, (double)c->rtol, (double)r->penetration,
+      (double)c->pen_atol));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode IndContactCreate_Newton(IndContact c)
+{
+  PetscFunctionBeginUser;
+  c->ops.residual             = Residual;
+  c->ops.jacobian             = Jacobian;
+  c->ops.after_outer          = AfterOuter;
+  c->ops.residual_multipliers = PETSC_TRUE;
+  /* rho sets which nodes are tried active and scales their rows, not the solution; the stiffness diagonal keeps
+     those rows as well conditioned as the rest. */
+  c->rho_scale = 1.0;
+  c->max_outer = 20;
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -1,3 +1,4 @@
+#include "contact_impl.h"
 #include "contact_node.h"
 
 void IndContactNodeSolve(IndContact c, PetscInt i, const PetscScalar *u, const PetscReal Rv[3], IndContactNode *ns)

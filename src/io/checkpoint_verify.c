@@ -1,13 +1,11 @@
+#define _POSIX_C_SOURCE 200809L /* strtok_r */
+#include <string.h>
 #include <petscviewerhdf5.h>
 #include "ind_checkpoint.h"
 #include "ind_keyedio.h"
 
-/* Every dataset a checkpoint holds; the first ones always, the rest when the run had curve points or
-   output steps. Each carries the checksum IndRowsWrite wrote with it. */
-static const char *const Datasets[][2] = {
-  {"/run", "scalars"}, {"/nodes", "keys"}, {"/nodes", "values"}, {"/cells", "keys"},
-  {"/cells", "history"}, {"/run", "curve"}, {"/run", "output_times"}, {"/run", "output_info"}};
-#define NREQUIRED 5
+/* Every dataset a checkpoint holds is listed in its attribute "datasets" (group/name per line, written by
+   IndStateFileClose), and carries the checksum IndRowsWrite wrote with it. */
 
 /* Whether HDF5 opens the file at all (a truncated file fails here), asked on rank 0 with HDF5's own
    error report silenced: the caller says it in one line. */
@@ -38,8 +36,7 @@ static PetscErrorCode Opens(MPI_Comm comm, const char path[], PetscBool *ok)
 
 /* Reads dataset name of the current group and compares it with its checksum; why says what is wrong. Errors
    of HDF5 or PETSc while reading (damaged metadata) are returned, not reported: the caller words them. */
-static PetscErrorCode Dataset(PetscViewer v, const char group[], const char name[], PetscInt *step, char why[],
-                              size_t len)
+static PetscErrorCode Dataset(PetscViewer v, const char group[], const char name[], char why[], size_t len)
 {
   Vec       x;
   PetscBool has, same;
@@ -56,22 +53,6 @@ static PetscErrorCode Dataset(PetscViewer v, const char group[], const char name
   PetscCall(IndRowsChecksumMatches(v, name, x, &has, &same));
   if (!same)
     PetscCall(PetscSNPrintf(why, len, "dataset %s/%s does not match the checksum written with it", group, name));
-  else if (step && !strcmp(name, "scalars")) {
-    const PetscScalar *s;
-    PetscInt           n;
-    PetscCall(VecGetSize(x, &n));
-    PetscCall(VecGetArrayRead(x, &s));
-    /* the accepted steps are the third scalar, on the rank that holds it */
-    {
-      PetscInt  rstart, rend;
-      PetscReal mine = -1;
-      PetscCall(VecGetOwnershipRange(x, &rstart, &rend));
-      if (n > 2 && rstart <= 2 && 2 < rend) mine = PetscRealPart(s[2 - rstart]);
-      PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &mine, 1, MPIU_REAL, MPIU_MAX, PetscObjectComm((PetscObject)v)));
-      *step = (PetscInt)mine;
-    }
-    PetscCall(VecRestoreArrayRead(x, &s));
-  }
   PetscCall(VecDestroy(&x));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -80,17 +61,28 @@ static PetscErrorCode Verify(MPI_Comm comm, const char path[], PetscInt *step, c
 {
   PetscViewer v;
   PetscBool   exists;
+  char       *list = NULL, *line, *save = NULL;
 
   PetscFunctionBeginUser;
   PetscCall(PetscViewerHDF5Open(comm, path, FILE_MODE_READ, &v));
-  for (int k = 0; k < (int)(sizeof(Datasets) / sizeof(Datasets[0])) && !why[0]; ++k) {
-    PetscCall(PetscViewerHDF5PushGroup(v, Datasets[k][0]));
-    PetscCall(PetscViewerHDF5HasDataset(v, Datasets[k][1], &exists));
-    if (exists) PetscCall(Dataset(v, Datasets[k][0], Datasets[k][1], step, why, len));
-    else if (k < NREQUIRED)
-      PetscCall(PetscSNPrintf(why, len, "dataset %s/%s is missing", Datasets[k][0], Datasets[k][1]));
+  PetscCall(PetscViewerHDF5HasAttribute(v, "/", "datasets", &exists));
+  if (!exists) PetscCall(PetscSNPrintf(why, len, "it lists no datasets (not a whole checkpoint of this version)"));
+  else PetscCall(PetscViewerHDF5ReadAttribute(v, "/", "datasets", PETSC_STRING, NULL, &list));
+  if (step) {
+    PetscCall(PetscViewerHDF5HasAttribute(v, "/", "accepted_steps", &exists));
+    if (exists) PetscCall(PetscViewerHDF5ReadAttribute(v, "/", "accepted_steps", PETSC_INT, NULL, step));
+  }
+  for (line = list ? strtok_r(list, "\n", &save) : NULL; line && !why[0]; line = strtok_r(NULL, "\n", &save)) {
+    char *name = strrchr(line, '/');
+    if (!name || name == line) continue;
+    *name++ = 0;
+    PetscCall(PetscViewerHDF5PushGroup(v, line));
+    PetscCall(PetscViewerHDF5HasDataset(v, name, &exists));
+    if (exists) PetscCall(Dataset(v, line, name, why, len));
+    else PetscCall(PetscSNPrintf(why, len, "dataset %s/%s is missing", line, name));
     PetscCall(PetscViewerHDF5PopGroup(v));
   }
+  PetscCall(PetscFree(list));
   PetscCall(PetscViewerDestroy(&v));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

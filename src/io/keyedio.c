@@ -114,9 +114,14 @@ PetscErrorCode IndRowsChecksumMatches(PetscViewer v, const char name[], Vec x, P
 
 PetscErrorCode IndCellCentroids(IndDisc disc, PetscReal **keys)
 {
+  const IndDiscLayout *L;
+  DM                   dm;
+
   PetscFunctionBeginUser;
-  PetscCall(PetscMalloc1(3 * disc->ncell + 1, keys));
-  for (PetscInt i = 0; i < disc->ncell; ++i) PetscCall(IndPointCentroid(disc->dm, disc->cStart + i, *keys + 3 * i));
+  PetscCall(IndDiscGetLayout(disc, &L));
+  PetscCall(IndDiscGetDM(disc, &dm));
+  PetscCall(PetscMalloc1(3 * L->ncell + 1, keys));
+  for (PetscInt i = 0; i < L->ncell; ++i) PetscCall(IndPointCentroid(dm, L->cStart + i, *keys + 3 * i));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -312,6 +312,23 @@ PetscErrorCode IndOptionsEList_Private(PetscOptionItems *po, const char opt[], c
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+PetscErrorCode IndOptionsType_Private(PetscOptionItems *po, const char opt[], const char text[],
+  IndRegistry *registry, const char cur[], char value[], size_t len, PetscBool *set)
+{
+  PetscInt  icur = 0, v;
+  PetscBool given = PETSC_FALSE;
+
+  PetscFunctionBeginUser;
+  PetscCall(IndRegistryReady(registry));
+  for (PetscInt k = 0; k < registry->n; ++k)
+    if (!strcmp(registry->name[k], cur)) icur = k;
+  v = icur;
+  PetscCall(IndOptionsEList_Private(po, opt, text, registry->names, registry->n, icur, &v, &given));
+  PetscCall(PetscStrncpy(value, registry->name[v], len));
+  if (set) *set = given;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode IndOptionsString_Private(PetscOptionItems *po, const char opt[], const char text[], const char what[],
   const char dflt[], const char cur[], char value[], size_t len, PetscBool *set)
 {

@@ -59,10 +59,10 @@ static PetscErrorCode CreateTopology(IndOutput o, IS *topo)
   /* DMPlex orders a hexahedron's top face the other way round from VTK, and its tetrahedra with the
      opposite orientation; these maps give VTK's positive-volume order. */
   const PetscInt hex[8] = {0, 3, 2, 1, 4, 7, 6, 5}, tet[4] = {1, 0, 2, 3};
-  const PetscInt *perm = o->mesh->simplex ? tet : hex;
+  const PetscInt *perm = o->simplex ? tet : hex;
 
   PetscFunctionBeginUser;
-  o->corners = o->mesh->simplex ? 4 : 8;
+  o->corners = o->simplex ? 4 : 8;
   PetscCall(DMGetGlobalSection(dm, &gs));
   PetscCall(DMPlexGetHeightStratum(dm, 0, &cStart, &cEnd));
   PetscCall(DMPlexGetDepthStratum(dm, 0, &vStart, &vEnd));
@@ -104,8 +104,8 @@ static PetscErrorCode WriteProvenance(IndOutput o)
   PetscCall(PetscViewerHDF5WriteAttribute(o->viewer, "/", "petsc_version", PETSC_STRING, petsc));
   PetscCall(PetscViewerHDF5WriteAttribute(o->viewer, "/", "mpi_ranks", PETSC_INT, &ranks));
   PetscCall(PetscViewerHDF5WriteAttribute(o->viewer, "/", "options", PETSC_STRING, opts));
-  PetscCall(PetscViewerHDF5WriteAttribute(o->viewer, "/", "mesh", PETSC_STRING, o->mesh->source));
-  PetscCall(PetscViewerHDF5WriteAttribute(o->viewer, "/", "disc_degree", PETSC_INT, &o->disc->degree));
+  PetscCall(PetscViewerHDF5WriteAttribute(o->viewer, "/", "mesh", PETSC_STRING, o->source));
+  PetscCall(PetscViewerHDF5WriteAttribute(o->viewer, "/", "disc_degree", PETSC_INT, &o->layout->degree));
   PetscCall(PetscViewerHDF5WriteAttribute(o->viewer, "/", "created", PETSC_STRING, date));
   PetscCall(PetscFree(opts));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -131,9 +131,9 @@ static PetscErrorCode OpenFile(IndOutput o)
   PetscCall(PetscViewerHDF5SetBaseDimension2(o->viewer, PETSC_TRUE));
   PetscCall(WriteProvenance(o));
 
-  PetscCall(DMGetCoordinateDM(o->mesh->dm, &cdm));
+  PetscCall(DMGetCoordinateDM(o->dm, &cdm));
   PetscCall(DMGetLocalSection(cdm, &cs));
-  PetscCall(DMGetCoordinatesLocal(o->mesh->dm, &X));
+  PetscCall(DMGetCoordinatesLocal(o->dm, &X));
   PetscCall(DMCreateGlobalVector(o->vdm, &coords));
   PetscCall(VecGetArrayRead(X, &x));
   PetscCall(GatherVertexValues(o, cs, x, coords));
@@ -180,7 +180,7 @@ static PetscErrorCode WriteXdmf(IndOutput o, PetscReal time)
     {"contact_status", "Scalar", PETSC_FALSE, 1},
   };
   const PetscInt    nfields = (PetscInt)(sizeof(fields) / sizeof(fields[0])) - (o->contact ? 0 : 2);
-  const IndXdmfMesh mesh    = {"indent.h5", o->mesh->simplex, o->nvert, o->ncell};
+  const IndXdmfMesh mesh    = {"indent.h5", o->simplex, o->nvert, o->ncell};
   PetscReal        *info    = o->info + IND_OUTPUT_INFO * o->nsteps;
   IndXdmfStep      *steps;
   char              path[PETSC_MAX_PATH_LEN];
@@ -230,12 +230,16 @@ PetscErrorCode IndOutputSetStepInfo(IndOutput o, PetscInt step, PetscReal t, Pet
 PetscErrorCode IndOutputCreate(IndMesh mesh, IndDisc disc, IndOutput *out)
 {
   IndOutput o;
-  MPI_Comm  comm = PetscObjectComm((PetscObject)mesh->dm);
+  MPI_Comm  comm;
 
   PetscFunctionBeginUser;
   PetscCall(PetscCalloc1(1, &o));
-  o->mesh    = mesh;
-  o->disc    = disc;
+  o->disc = disc;
+  PetscCall(IndMeshGetDM(mesh, &o->dm));
+  PetscCall(IndMeshIsSimplex(mesh, &o->simplex));
+  PetscCall(IndMeshGetSource(mesh, &o->source));
+  PetscCall(IndDiscGetLayout(disc, &o->layout));
+  comm = PetscObjectComm((PetscObject)o->dm);
   o->enabled = PETSC_TRUE;
   o->curve   = PETSC_TRUE;
   o->size_warning = 10;
@@ -254,10 +258,10 @@ PetscErrorCode IndOutputCreate(IndMesh mesh, IndDisc disc, IndOutput *out)
   PetscCheck(o->dir[0], comm, PETSC_ERR_ARG_WRONG, "-output_dir must not be empty");
   PetscCall(PetscSNPrintf(o->h5name, sizeof(o->h5name), "%s/indent.h5", o->dir));
   if (o->enabled || o->curve) PetscCall(IndMakeDirectory(comm, o->dir, "-output_dir"));
-  PetscCall(CreateStratumDM(mesh->dm, PETSC_FALSE, 3, &o->vdm));
-  PetscCall(CreateStratumDM(mesh->dm, PETSC_TRUE, 6, &o->c6dm));
-  PetscCall(CreateStratumDM(mesh->dm, PETSC_TRUE, 1, &o->c1dm));
-  PetscCall(DMCreateLocalVector(disc->dm, &o->Uloc));
+  PetscCall(CreateStratumDM(o->dm, PETSC_FALSE, 3, &o->vdm));
+  PetscCall(CreateStratumDM(o->dm, PETSC_TRUE, 6, &o->c6dm));
+  PetscCall(CreateStratumDM(o->dm, PETSC_TRUE, 1, &o->c1dm));
+  PetscCall(DMCreateLocalVector(o->dm, &o->Uloc));
   PetscCall(DMCreateLocalVector(o->vdm, &o->vloc));
   PetscCall(DMCreateGlobalVector(o->vdm, &o->disp));
   PetscCall(DMCreateGlobalVector(o->c6dm, &o->stress));
@@ -283,7 +287,7 @@ PetscErrorCode IndOutputCreate(IndMesh mesh, IndDisc disc, IndOutput *out)
 PetscErrorCode IndOutputBytesPerStep(IndOutput o, PetscReal *bytes)
 {
   Vec      v;
-  PetscInt nvert, ncell = o->disc->ncell;
+  PetscInt nvert, ncell = o->layout->ncell;
 
   PetscFunctionBeginUser;
   *bytes = 0;
@@ -341,10 +345,10 @@ PetscErrorCode IndOutputSetContact(IndOutput o, IndContact contact)
   PetscFunctionBeginUser;
   o->contact = contact;
   if (!contact) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCall(DMCreateGlobalVector(o->disc->dm, &o->Gc));
-  PetscCall(DMCreateLocalVector(o->disc->dm, &o->Cloc));
+  PetscCall(DMCreateGlobalVector(o->dm, &o->Gc));
+  PetscCall(DMCreateLocalVector(o->dm, &o->Cloc));
   PetscCall(DMCreateGlobalVector(o->vdm, &o->c3));
-  PetscCall(CreateStratumDM(o->mesh->dm, PETSC_FALSE, 1, &v1dm));
+  PetscCall(CreateStratumDM(o->dm, PETSC_FALSE, 1, &v1dm));
   PetscCall(DMCreateGlobalVector(v1dm, &o->pressure));
   PetscCall(DMCreateGlobalVector(v1dm, &o->status));
   PetscCall(DMDestroy(&v1dm));
@@ -363,8 +367,8 @@ static PetscErrorCode GatherContactFields(IndOutput o)
 
   PetscFunctionBeginUser;
   PetscCall(IndContactNodalFields(o->contact, o->Gc));
-  PetscCall(DMGlobalToLocal(o->disc->dm, o->Gc, INSERT_VALUES, o->Cloc));
-  PetscCall(DMGetLocalSection(o->disc->dm, &us));
+  PetscCall(DMGlobalToLocal(o->dm, o->Gc, INSERT_VALUES, o->Cloc));
+  PetscCall(DMGetLocalSection(o->dm, &us));
   PetscCall(VecGetArrayRead(o->Cloc, &cl));
   PetscCall(GatherVertexValues(o, us, cl, o->c3));
   PetscCall(VecRestoreArrayRead(o->Cloc, &cl));
@@ -397,8 +401,8 @@ PetscErrorCode IndOutputWriteStep(IndOutput o, PetscReal time, Vec U, IndAssembl
   PetscCall(PetscLogStagePush(IndLog.output));
   PetscCall(PetscLogEventBegin(IndLog.output_write, 0, 0, 0, 0));
   if (!o->viewer) PetscCall(OpenFile(o));
-  PetscCall(DMGlobalToLocal(o->disc->dm, U, INSERT_VALUES, o->Uloc));
-  PetscCall(DMGetLocalSection(o->disc->dm, &us));
+  PetscCall(DMGlobalToLocal(o->dm, U, INSERT_VALUES, o->Uloc));
+  PetscCall(DMGetLocalSection(o->dm, &us));
   PetscCall(VecGetArrayRead(o->Uloc, &u));
   PetscCall(GatherVertexValues(o, us, u, o->disp));
   PetscCall(VecRestoreArrayRead(o->Uloc, &u));
@@ -412,7 +416,7 @@ PetscErrorCode IndOutputWriteStep(IndOutput o, PetscReal time, Vec U, IndAssembl
   PetscCall(VecGetArray(o->yielding, &o->cells.yielding));
   PetscCall(IndAssemblyCellAverages(assembly, o->Uloc, &o->cells));
   PetscCall(VecGetArray(o->vonmises, &vm));
-  for (PetscInt i = 0; i < o->disc->ncell; ++i) vm[i] = IndVonMises(o->cells.stress + 6 * i);
+  for (PetscInt i = 0; i < o->layout->ncell; ++i) vm[i] = IndVonMises(o->cells.stress + 6 * i);
   PetscCall(VecRestoreArray(o->vonmises, &vm));
   PetscCall(VecRestoreArray(o->stress, &o->cells.stress));
   PetscCall(VecRestoreArray(o->strain, &o->cells.strain));
@@ -493,3 +497,8 @@ PetscErrorCode IndOutputDestroy(IndOutput *o)
   PetscCall(PetscFree(*o));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
+
+IND_GETTER(const char *, IndOutputGetDir, IndOutput, o->dir)
+IND_GETTER(const char *, IndOutputGetFieldFile, IndOutput, o->h5name)
+IND_GETTER(PetscBool, IndOutputFieldsEnabled, IndOutput, o->enabled)
+IND_GETTER(PetscBool, IndOutputCurveEnabled, IndOutput, o->curve)

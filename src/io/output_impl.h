@@ -1,7 +1,36 @@
 #pragma once
-/* Private to the output module: continuing a field file and the curve's text format. */
+/* Private to src/io/: the fields of IndOutput, continuing a field file, and the curve's text format. */
 #include <stdio.h>
 #include "ind_output.h"
+
+struct _p_IndOutput {
+  IndDisc              disc;
+  DM                   dm;      /* the mesh's, which carries the displacement (borrowed) */
+  PetscBool            simplex; /* tetrahedra */
+  const char          *source;  /* the mesh file, or "box" (the mesh's) */
+  const IndDiscLayout *layout;  /* the discretisation's */
+  PetscBool   enabled;
+  PetscBool   curve;   /* -output_curve */
+  PetscReal   size_warning; /* -output_size_warning, GB: field output expected beyond it is announced */
+  FILE       *csv;     /* rank 0, opened at the first point */
+  char        dir[PETSC_MAX_PATH_LEN];
+  char        h5name[PETSC_MAX_PATH_LEN];
+  PetscViewer viewer;
+  DM          vdm, c6dm, c1dm; /* vertex (3 dof), cell (6 dof) and cell (1 dof) layouts */
+  Vec           Uloc, vloc, disp, stress, strain, vonmises, plastic, back, yielding;
+  IndCellFields cells; /* per local cell, filled by the assembly */
+  IndContact    contact;                      /* NULL without an indenter */
+  Vec           Gc, Cloc, c3, pressure, status; /* contact fields: disc layout (global, local),
+    vertex 3-dof and 1-dof */
+  PetscInt    nsteps;
+  PetscReal  *times;    /* per output step: XDMF time value, the pseudo-time t given to IndOutputSetStepInfo */
+  PetscReal  *info;     /* per output step: IND_OUTPUT_INFO values, NaN where not known */
+  PetscBool   info_set; /* IndOutputSetStepInfo was called for the coming step */
+  PetscBool   resume;               /* continue indent.h5 (a restarted run) rather than create it */
+  struct _n_IndOutputPerm *perm;   /* resumed: where this run's vertices and cells sit in the file */
+  PetscInt    nvert, ncell, corners; /* global counts */
+};
+
 
 /* The curve's CSV header and one line of it. */
 void           IndOutputCurveHeader(FILE *fp);

@@ -66,7 +66,7 @@ PetscErrorCode IndOutputWriteCellKeys(IndOutput o)
   PetscFunctionBeginUser;
   PetscCall(IndCellCentroids(o->disc, &keys));
   PetscCall(PetscViewerHDF5PushGroup(o->viewer, "/topology"));
-  PetscCall(IndRowsWrite(o->viewer, "cell_centroids", o->disc->ncell, 3, keys));
+  PetscCall(IndRowsWrite(o->viewer, "cell_centroids", o->layout->ncell, 3, keys));
   PetscCall(PetscViewerHDF5PopGroup(o->viewer));
   PetscCall(PetscFree(keys));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -91,9 +91,9 @@ PetscErrorCode IndOutputOpenResumed(IndOutput o)
   PetscCall(PetscViewerHDF5SetBaseDimension2(o->viewer, PETSC_TRUE));
 
   /* The vertices' keys are their coordinates, in the order of this run's vertex vectors. */
-  PetscCall(DMGetCoordinateDM(o->mesh->dm, &cdm));
+  PetscCall(DMGetCoordinateDM(o->dm, &cdm));
   PetscCall(DMGetLocalSection(cdm, &cs));
-  PetscCall(DMGetCoordinatesLocal(o->mesh->dm, &X));
+  PetscCall(DMGetCoordinatesLocal(o->dm, &X));
   PetscCall(DMGetLocalSection(o->vdm, &vs));
   PetscCall(DMPlexGetDepthStratum(o->vdm, 0, &vStart, &vEnd));
   PetscCall(DMCreateGlobalVector(o->vdm, &coords));
@@ -124,7 +124,7 @@ PetscErrorCode IndOutputOpenResumed(IndOutput o)
   PetscCall(PetscViewerHDF5PopGroup(o->viewer));
   PetscCall(PetscFree(vkeys));
 
-  pm->n[1] = o->disc->ncell;
+  pm->n[1] = o->layout->ncell;
   PetscCall(IndCellCentroids(o->disc, &ckeys));
   PetscCall(PetscViewerHDF5PushGroup(o->viewer, "/topology"));
   PetscCall(IndRowsLocate(o->viewer, "cell_centroids", "cells", file, pm->n[1], ckeys, &pm->index[1]));
@@ -136,7 +136,7 @@ PetscErrorCode IndOutputOpenResumed(IndOutput o)
   }
   o->nvert   = pm->N[0];
   o->ncell   = pm->N[1];
-  o->corners = o->mesh->simplex ? 4 : 8;
+  o->corners = o->simplex ? 4 : 8;
   PetscCall(PetscViewerHDF5PushTimestepping(o->viewer));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -192,5 +192,24 @@ PetscErrorCode IndOutputPermDestroy(IndOutput o)
     }
   }
   PetscCall(PetscFree(o->perm));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode IndOutputState(void *obj, IndStateFile f)
+{
+  IndOutput  o = (IndOutput)obj;
+  PetscInt   n = o->nsteps;
+  PetscReal *times = o->times;
+
+  PetscFunctionBeginUser;
+  PetscCall(IndStateRealArray(f, "times", &n, &times));
+  if (IndStateReading(f)) {
+    PetscCheck(n <= IND_MAX_OUTPUT_STEPS, PetscObjectComm((PetscObject)o->dm), PETSC_ERR_FILE_UNEXPECTED,
+               "The state holds %" PetscInt_FMT " output steps, more than %d", n, IND_MAX_OUTPUT_STEPS);
+    if (n) PetscCall(PetscArraycpy(o->times, times, n));
+    PetscCall(PetscFree(times));
+    o->nsteps = n;
+  }
+  PetscCall(IndStateReals(f, "info", IND_OUTPUT_INFO * n, o->info));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -1,3 +1,6 @@
+#include "bc_impl.h"
+#include "disc_impl.h"
+#include "mesh_impl.h"
 #include "ind_bc.h"
 
 static PetscErrorCode AddSpec(IndBC bc, const char label[], const char option[], PetscInt mask,
@@ -336,5 +339,23 @@ PetscErrorCode IndBCDestroy(IndBC *bc)
   if (!*bc) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(PetscFree3((*bc)->rows, (*bc)->lrows, (*bc)->values));
   PetscCall(PetscFree(*bc));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode IndBCGetSpecs(IndBC bc, PetscInt *n, const IndBCSpec **specs)
+{
+  PetscFunctionBeginUser;
+  *n     = bc->nspec;
+  *specs = bc->spec;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode IndBCGetRows(IndBC bc, PetscInt *n, const PetscInt **rows, const PetscInt **local)
+{
+  PetscFunctionBeginUser;
+  PetscCheck(bc->setup, PETSC_COMM_SELF, PETSC_ERR_ORDER, "IndBCGetRows() before IndBCSetUp()");
+  *n = bc->nrows;
+  if (rows) *rows = bc->rows;
+  if (local) *local = bc->lrows;
   PetscFunctionReturn(PETSC_SUCCESS);
 }

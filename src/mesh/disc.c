@@ -1,3 +1,5 @@
+#include "disc_impl.h"
+#include "mesh_impl.h"
 #include "ind_disc.h"
 #include "ind_common.h"
 
@@ -226,7 +228,7 @@ static PetscErrorCode CheckGeometry(IndDisc disc, PetscQuadrature quad, PetscInt
   for (PetscInt i = 0; i < disc->ncell; ++i) {
     const PetscInt   c  = disc->cStart + i;
     const PetscReal *dN = own ? disc->dN : dNx;
-    if (own) IndDiscCellNodes(disc, i, xn, xc);
+    if (own) IndDiscCellNodes(&disc->layout, i, xn, xc);
     else {
       PetscScalar *cl = NULL;
       PetscInt     nc;
@@ -256,6 +258,13 @@ static PetscErrorCode CheckGeometry(IndDisc disc, PetscQuadrature quad, PetscInt
   PetscCall(PetscFree(Nx));
   PetscCall(PetscFree(dNx));
   PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static void SyncLayout(IndDisc disc)
+{
+  disc->layout = (IndDiscLayout){disc->degree, disc->simplex, disc->nq,    disc->nb,   disc->ndof,
+                                 disc->w,      disc->N,       disc->dN,    disc->ncell, disc->cStart,
+                                 disc->lidx,   disc->gidx,    disc->wdetJ, disc->invJ};
 }
 
 PetscErrorCode IndDiscCreate(IndMesh mesh, IndDisc *out)
@@ -299,9 +308,11 @@ PetscErrorCode IndDiscCreate(IndMesh mesh, IndDisc *out)
     PetscCall(CacheIndices(disc));
     PetscCall(CoordinateLayout(disc, &nn, &on_vertices));
     PetscCall(NodePositions(disc, nn, on_vertices));
+    SyncLayout(disc);
     PetscCall(CheckGeometry(disc, quad, nn));
     PetscCall(PetscLogEventEnd(IndLog.geometry, 0, 0, 0, 0));
   }
+  SyncLayout(disc);
   *out = disc;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -340,6 +351,10 @@ PetscErrorCode IndDiscQuadraturePoints(IndDisc disc, PetscReal **xq)
   PetscCall(PetscFree(Nx));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
+
+IND_GETTER_OUT(const IndDiscLayout *, IndDiscGetLayout, IndDisc, &o->layout)
+IND_GETTER_OUT(DM, IndDiscGetDM, IndDisc, o->dm)
+IND_GETTER_OUT(Vec, IndDiscGetNodePositions, IndDisc, o->Xloc)
 
 PetscErrorCode IndDiscNodeCoordinates(IndDisc disc, Vec *coords)
 {

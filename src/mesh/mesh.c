@@ -1,3 +1,4 @@
+#include "mesh_impl.h"
 #include <stdint.h>
 #include <math.h>
 #include <petscsf.h>
@@ -555,3 +556,16 @@ PetscErrorCode IndMeshCheckRegionNotEmpty(IndMesh mesh, const char name[], Petsc
     option);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
+
+IND_GETTER_OUT(DM, IndMeshGetDM, IndMesh, o->dm)
+IND_GETTER_OUT(PetscBool, IndMeshIsSimplex, IndMesh, o->simplex)
+
+PetscErrorCode IndMeshGetRegions(IndMesh mesh, PetscInt *n, const IndRegion **regions)
+{
+  PetscFunctionBeginUser;
+  if (n) *n = mesh->nregions;
+  if (regions) *regions = mesh->regions;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+IND_GETTER_OUT(const char *, IndMeshGetSource, IndMesh, o->source)

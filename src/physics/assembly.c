@@ -2,29 +2,42 @@
 #include "ind_pattern.h"
 
 const char *const IndTangentTypes[]     = {"consistent", "elastic", "IndTangent", "IND_TANGENT_", NULL};
-const char *const IndFormulationTypes[] = {"small", "finite", "IndFormulation", "IND_FORMULATION_", NULL};
+IndRegistry IndKinematicsRegistry = {
+  .builtin = (const IndRegistryEntry[]){{"small", (IndRegistryFn)IndKinematicsSmall},
+                                        {"finite", (IndRegistryFn)IndKinematicsFinite},
+                                        {NULL, NULL}}
+};
 
 PetscErrorCode IndAssemblyCreate(IndDisc disc, IndMaterials mats, IndHistory history, IndAssembly *out)
 {
   IndAssembly a;
-  PetscInt    nd = disc->ndof;
+  PetscInt    nd;
 
   PetscFunctionBeginUser;
   PetscCall(PetscCalloc1(1, &a));
   a->disc    = disc;
+  PetscCall(IndDiscGetLayout(disc, &a->layout));
+  PetscCall(IndDiscGetDM(disc, &a->dm));
+  PetscCall(IndDiscGetNodePositions(disc, &a->Xloc));
+  nd = a->layout->ndof;
   a->mats    = mats;
   a->history = history;
   a->tangent     = IND_TANGENT_CONSISTENT;
-  a->formulation = IND_FORMULATION_FINITE; /* agrees with large-deformation references (doc/finite-strain.md) */
-  PetscOptionsBegin(PetscObjectComm((PetscObject)disc->dm), NULL, IND_TITLE "Kinematics and assembly", "Assembly");
-  PetscCall(IndOptionsEnum("-formulation",
-                           "Kinematics: finite strain (total Lagrangian, plasticity in logarithmic strain) or small "
-                           "strain (the paper's model)",
-                           IndFormulationTypes, (PetscEnum)a->formulation, (PetscEnum *)&a->formulation, NULL));
+  PetscOptionsBegin(PetscObjectComm((PetscObject)a->dm), NULL, IND_TITLE "Kinematics and assembly", "Assembly");
+  {
+    IndRegistryFn fn;
+    char          name[IND_NAME_LEN];
+    /* finite by default: it agrees with large-deformation references (doc/finite-strain.md) */
+    PetscCall(IndOptionsType("-formulation",
+                             "Kinematics: finite strain (total Lagrangian, plasticity in logarithmic strain) or small "
+                             "strain (the paper's model)", &IndKinematicsRegistry, "finite", name, sizeof(name), NULL));
+    PetscCall(IndRegistryGet(&IndKinematicsRegistry, PetscObjectComm((PetscObject)a->dm), "-formulation", name, &fn));
+    a->kin = ((const IndKinematics *(*)(void))fn)();
+  }
   PetscCall(IndOptionsEnum("-plastic_tangent", "Tangent of plastic points: consistent (quadratic Newton) or elastic",
     IndTangentTypes, (PetscEnum)a->tangent, (PetscEnum *)&a->tangent, NULL));
   PetscOptionsEnd();
-  PetscCall(PetscMalloc7(nd, &a->ue, nd, &a->xe, nd, &a->fe, nd * nd, &a->Ke, disc->nb * 3, &a->G, 6 * nd, &a->DB,
+  PetscCall(PetscMalloc7(nd, &a->ue, nd, &a->xe, nd, &a->fe, nd * nd, &a->Ke, a->layout->nb * 3, &a->G, 6 * nd, &a->DB,
                          6 * nd, &a->B));
   *out = a;
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -52,28 +65,12 @@ PetscErrorCode IndAssemblySetBodyForce(IndAssembly a, IndVectorFn fn, void *ctx)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Engineering strain from the gradients G (nb x 3) and the cell displacements u (nb x 3). */
-static inline void Strain(PetscInt nb, const PetscReal *G, const PetscReal *u, PetscReal eps[6])
-{
-  for (int k = 0; k < 6; ++k) eps[k] = 0.0;
-  for (PetscInt a = 0; a < nb; ++a) {
-    const PetscReal gx = G[3 * a], gy = G[3 * a + 1], gz = G[3 * a + 2], ux = u[3 * a], uy = u[3 * a + 1],
-      uz = u[3 * a + 2];
-    eps[0] += gx * ux;
-    eps[1] += gy * uy;
-    eps[2] += gz * uz;
-    eps[3] += gy * ux + gx * uy;
-    eps[4] += gz * uy + gy * uz;
-    eps[5] += gz * ux + gx * uz;
-  }
-}
-
 /* The cell loop of the residual (Floc) or of the commit (Floc NULL): the constitutive update of every
    quadrature point from its committed state at the displacement Uloc; the residual only reads the
    history, the commit writes the update over it. */
 static PetscErrorCode PointLoop(IndAssembly a, Vec Uloc, Vec Floc)
 {
-  IndDisc            disc = a->disc;
+  const IndDiscLayout *disc = a->layout;
   const PetscInt     nb = disc->nb, nq = disc->nq;
   const PetscInt     stride = a->history->stride;
   const PetscScalar *u;
@@ -84,7 +81,7 @@ static PetscErrorCode PointLoop(IndAssembly a, Vec Uloc, Vec Floc)
   a->nfailed = a->nplastic = 0;
   if (Floc) PetscCall(VecZeroEntries(Floc));
   PetscCall(VecGetArrayRead(Uloc, &u));
-  PetscCall(VecGetArrayRead(disc->Xloc, &xn));
+  PetscCall(VecGetArrayRead(a->Xloc, &xn));
   if (Floc) PetscCall(VecGetArray(Floc, &f));
   if (Floc) {
     PetscCall(VecGetArrayRead(a->history->committed, &hist_read));
@@ -105,16 +102,7 @@ static PetscErrorCode PointLoop(IndAssembly a, Vec Uloc, Vec Floc)
       IndPlasticStatus status;
 
       PetscCall(PetscArraycpy(old, h, IND_HISTORY_NVAL));
-      if (a->formulation == IND_FORMULATION_FINITE)
-        status = IndFinitePointStress(m, a->tangent, nb, a->G, a->ue, old, trial, P, &dp);
-      else {
-        PetscReal eps[6], s[6];
-        Strain(nb, a->G, a->ue, eps);
-        status = MaterialResponse(m, a->tangent, eps, old, trial, s, NULL, &dp);
-        P[0] = s[0], P[1] = s[3], P[2] = s[5];
-        P[3] = s[3], P[4] = s[1], P[5] = s[4];
-        P[6] = s[5], P[7] = s[4], P[8] = s[2];
-      }
+      status = a->kin->stress(m, a->tangent, nb, a->G, a->ue, old, trial, P, &dp);
       if (status != IND_PLASTIC_OK) {
         a->nfailed++;
         continue;
@@ -137,7 +125,7 @@ static PetscErrorCode PointLoop(IndAssembly a, Vec Uloc, Vec Floc)
   }
   if (Floc) PetscCall(VecRestoreArrayRead(a->history->committed, &hist_read));
   else PetscCall(VecRestoreArray(a->history->committed, &hist));
-  PetscCall(VecRestoreArrayRead(disc->Xloc, &xn));
+  PetscCall(VecRestoreArrayRead(a->Xloc, &xn));
   PetscCall(VecRestoreArrayRead(Uloc, &u));
   if (Floc) PetscCall(VecRestoreArray(Floc, &f));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -148,7 +136,7 @@ PetscErrorCode IndAssemblyResidual(IndAssembly a, Vec Uloc, Vec Floc)
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(IndLog.residual, 0, 0, 0, 0));
   PetscCall(PointLoop(a, Uloc, Floc));
-  PetscCall(PetscLogFlops(a->disc->ncell * a->disc->nq * (30.0 * a->disc->nb)));
+  PetscCall(PetscLogFlops(a->layout->ncell * a->layout->nq * (30.0 * a->layout->nb)));
   PetscCall(PetscLogEventEnd(IndLog.residual, 0, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -162,34 +150,9 @@ PetscErrorCode IndAssemblyCommit(IndAssembly a, Vec Uloc)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Ke += w B^T D B on and above the diagonal, using the sparsity of B: column 3b+c of B holds the
-   gradient of N_b. D is symmetric (elastic and consistent plastic tangents alike), so is Ke. */
-static inline void AddBtDB(PetscInt nb, const PetscReal *G, const PetscReal D[36], PetscReal w, PetscReal *DB,
-  PetscReal *Ke)
-{
-  const PetscInt nd = 3 * nb;
-  for (PetscInt b = 0; b < nb; ++b) {
-    const PetscReal gx = G[3 * b], gy = G[3 * b + 1], gz = G[3 * b + 2];
-    for (int r = 0; r < 6; ++r) {
-      const PetscReal *Dr = D + r * 6;
-      DB[r * nd + 3 * b + 0] = Dr[0] * gx + Dr[3] * gy + Dr[5] * gz;
-      DB[r * nd + 3 * b + 1] = Dr[1] * gy + Dr[3] * gx + Dr[4] * gz;
-      DB[r * nd + 3 * b + 2] = Dr[2] * gz + Dr[4] * gy + Dr[5] * gx;
-    }
-  }
-  /* the upper triangle only: the cell loop mirrors it */
-  for (PetscInt a = 0; a < nb; ++a) {
-    const PetscReal gx = w * G[3 * a], gy = w * G[3 * a + 1], gz = w * G[3 * a + 2];
-    PetscReal      *K0 = Ke + (3 * a) * nd, *K1 = K0 + nd, *K2 = K1 + nd;
-    for (PetscInt k = 3 * a; k < nd; ++k) K0[k] += gx * DB[0 * nd + k] + gy * DB[3 * nd + k] + gz * DB[5 * nd + k];
-    for (PetscInt k = 3 * a + 1; k < nd; ++k) K1[k] += gy * DB[1 * nd + k] + gx * DB[3 * nd + k] + gz * DB[4 * nd + k];
-    for (PetscInt k = 3 * a + 2; k < nd; ++k) K2[k] += gz * DB[2 * nd + k] + gy * DB[4 * nd + k] + gx * DB[5 * nd + k];
-  }
-}
-
 PetscErrorCode IndAssemblyJacobian(IndAssembly a, Vec Uloc, Mat J)
 {
-  IndDisc            disc = a->disc;
+  const IndDiscLayout *disc = a->layout;
   const PetscInt     nb = disc->nb, nq = disc->nq, nd = disc->ndof, stride = a->history->stride;
   const PetscScalar *u, *xn, *hold;
   IndMatInsert       ins = J == a->J ? a->insert : NULL; /* cached positions are the matrix's own */
@@ -199,7 +162,7 @@ PetscErrorCode IndAssemblyJacobian(IndAssembly a, Vec Uloc, Mat J)
   if (ins) PetscCall(IndMatInsertBegin(ins, J));
   else PetscCall(MatZeroEntries(J));
   PetscCall(VecGetArrayRead(Uloc, &u));
-  PetscCall(VecGetArrayRead(disc->Xloc, &xn));
+  PetscCall(VecGetArrayRead(a->Xloc, &xn));
   PetscCall(VecGetArrayRead(a->history->committed, &hold));
   for (PetscInt i = 0; i < disc->ncell; ++i) {
     const IndMaterial *m = &a->mats->mat[a->mats->cell_material[i]];
@@ -212,14 +175,7 @@ PetscErrorCode IndAssemblyJacobian(IndAssembly a, Vec Uloc, Mat J)
       const PetscReal *old = hold + i * stride + q * IND_HISTORY_NVAL;
       /* A failed point was already reported by the residual at this displacement, which stops the
          Newton iteration before any Jacobian; its NaN tangent cannot go unnoticed either. */
-      if (a->formulation == IND_FORMULATION_FINITE)
-        (void)IndFinitePointStiffness(m, a->tangent, nb, a->G, a->ue, old, w, a->B, a->DB, a->Ke);
-      else {
-        PetscReal eps[6], s[6], D[36], dp;
-        Strain(nb, a->G, a->ue, eps);
-        (void)MaterialResponse(m, a->tangent, eps, old, NULL, s, D, &dp);
-        AddBtDB(nb, a->G, D, w, a->DB, a->Ke);
-      }
+      (void)a->kin->stiffness(m, a->tangent, nb, a->G, a->ue, old, w, a->B, a->DB, a->Ke);
     }
     for (PetscInt r = 1; r < nd; ++r)
       for (PetscInt c = 0; c < r; ++c) a->Ke[r * nd + c] = a->Ke[c * nd + r];
@@ -227,7 +183,7 @@ PetscErrorCode IndAssemblyJacobian(IndAssembly a, Vec Uloc, Mat J)
     else PetscCall(MatSetValues(J, nd, g, nd, g, a->Ke, ADD_VALUES));
   }
   PetscCall(VecRestoreArrayRead(a->history->committed, &hold));
-  PetscCall(VecRestoreArrayRead(disc->Xloc, &xn));
+  PetscCall(VecRestoreArrayRead(a->Xloc, &xn));
   PetscCall(VecRestoreArrayRead(Uloc, &u));
   if (ins) PetscCall(IndMatInsertEnd(ins, J));
   else {
@@ -241,14 +197,14 @@ PetscErrorCode IndAssemblyJacobian(IndAssembly a, Vec Uloc, Mat J)
 
 PetscErrorCode IndAssemblyCreateMatrix(IndAssembly a, Mat *J)
 {
-  IndDisc      disc = a->disc;
-  MPI_Comm     comm = PetscObjectComm((PetscObject)disc->dm);
+  const IndDiscLayout *disc = a->layout;
+  MPI_Comm     comm = PetscObjectComm((PetscObject)a->dm);
   PetscSection gs;
   PetscInt     nlocal;
   PetscBool    aij;
 
   PetscFunctionBeginUser;
-  PetscCall(DMGetGlobalSection(disc->dm, &gs));
+  PetscCall(DMGetGlobalSection(a->dm, &gs));
   PetscCall(PetscSectionGetConstrainedStorageSize(gs, &nlocal));
   PetscCall(MatCreate(comm, J));
   PetscCall(MatSetType(*J, MATAIJ));
@@ -257,7 +213,7 @@ PetscErrorCode IndAssemblyCreateMatrix(IndAssembly a, Mat *J)
   PetscCall(MatSetOptionsPrefix(*J, "jac_"));
   PetscCall(MatSetFromOptions(*J));
   PetscCall(PetscObjectBaseTypeCompareAny((PetscObject)*J, &aij, MATSEQAIJ, MATMPIAIJ, ""));
-  if (aij) PetscCall(IndPatternFromCells(disc, *J));
+  if (aij) PetscCall(IndPatternFromCells(a->disc, *J));
   else {
     /* another type (-jac_mat_type): a dry run of the cell loop */
     Mat          P;
@@ -297,20 +253,20 @@ PetscErrorCode IndAssemblyCreateMatrix(IndAssembly a, Mat *J)
     if (aij) PetscCall(MatSetOption(*J, MAT_USE_INODES, inodes));
     PetscCall(IndMatInsertDestroy(&a->insert));
     a->J = *J;
-    if (cached) PetscCall(IndMatInsertCreate(disc, *J, &a->insert));
+    if (cached) PetscCall(IndMatInsertCreate(a->disc, *J, &a->insert));
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 PetscErrorCode IndAssemblyCellAverages(IndAssembly a, Vec Uloc, IndCellFields *out)
 {
-  IndDisc            disc = a->disc;
+  const IndDiscLayout *disc = a->layout;
   const PetscInt     nq = disc->nq, stride = a->history->stride;
   const PetscScalar *u, *xn, *hist;
 
   PetscFunctionBeginUser;
   PetscCall(VecGetArrayRead(Uloc, &u));
-  PetscCall(VecGetArrayRead(disc->Xloc, &xn));
+  PetscCall(VecGetArrayRead(a->Xloc, &xn));
   PetscCall(VecGetArrayRead(a->history->committed, &hist));
   for (PetscInt i = 0; i < disc->ncell; ++i) {
     const IndMaterial *m   = &a->mats->mat[a->mats->cell_material[i]];
@@ -320,15 +276,8 @@ PetscErrorCode IndAssemblyCellAverages(IndAssembly a, Vec Uloc, IndCellFields *o
       const PetscReal *h = hist + i * stride + q * IND_HISTORY_NVAL;
       const IndPlasticState *st = (const IndPlasticState *)h;
       const PetscReal  w0 = IndDiscGradients(disc, i, a->xe, q, a->G);
-      PetscReal        eps[6], ee[6], s[6], w = w0;
-      if (a->formulation == IND_FORMULATION_FINITE) IndAssemblyFinitePointFields(a, i, h, s, eps, &w);
-      else {
-        Strain(disc->nb, a->G, a->ue, eps);
-        /* The committed state is the converged one: its stress is elastic in eps - eps_p (eps_p is
-           deviatoric), with no return map to repeat. */
-        for (int k = 0; k < 6; ++k) ee[k] = eps[k] - st->eps_p[k];
-        IndElasticStress(m->kappa, m->mu, ee, s);
-      }
+      PetscReal        eps[6], s[6], w = w0;
+      a->kin->fields(m, disc->nb, a->G, a->ue, h, s, eps, &w);
       /* stress and strain over the current volume (w: at finite strain w0 J); the material's own
          state (p, back stress, yielding) over the material, i.e. the reference volume */
       vol += w;
@@ -350,14 +299,14 @@ PetscErrorCode IndAssemblyCellAverages(IndAssembly a, Vec Uloc, IndCellFields *o
     out->yielding[i]    = yavg / vol0;
   }
   PetscCall(VecRestoreArrayRead(a->history->committed, &hist));
-  PetscCall(VecRestoreArrayRead(disc->Xloc, &xn));
+  PetscCall(VecRestoreArrayRead(a->Xloc, &xn));
   PetscCall(VecRestoreArrayRead(Uloc, &u));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 PetscErrorCode IndAssemblyCountInverted(IndAssembly a, Vec Uloc, PetscInt *ncells, PetscReal *jmin)
 {
-  IndDisc            disc = a->disc;
+  const IndDiscLayout *disc = a->layout;
   const PetscInt     nb = disc->nb, nq = disc->nq;
   const PetscScalar *u, *xn;
 
@@ -365,7 +314,7 @@ PetscErrorCode IndAssemblyCountInverted(IndAssembly a, Vec Uloc, PetscInt *ncell
   *ncells = 0;
   *jmin   = PETSC_MAX_REAL;
   PetscCall(VecGetArrayRead(Uloc, &u));
-  PetscCall(VecGetArrayRead(disc->Xloc, &xn));
+  PetscCall(VecGetArrayRead(a->Xloc, &xn));
   for (PetscInt i = 0; i < disc->ncell; ++i) {
     PetscBool inverted = PETSC_FALSE;
     GatherCell(a, i, u, xn);
@@ -379,7 +328,30 @@ PetscErrorCode IndAssemblyCountInverted(IndAssembly a, Vec Uloc, PetscInt *ncell
     }
     *ncells += inverted ? 1 : 0;
   }
-  PetscCall(VecRestoreArrayRead(disc->Xloc, &xn));
+  PetscCall(VecRestoreArrayRead(a->Xloc, &xn));
   PetscCall(VecRestoreArrayRead(Uloc, &u));
   PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode IndAssemblyElasticJacobian(IndAssembly a, Vec Uloc, Mat K)
+{
+  const IndTangent tangent = a->tangent;
+  IndMatInsert     insert  = a->insert;
+
+  PetscFunctionBeginUser;
+  a->tangent = IND_TANGENT_ELASTIC;
+  a->insert  = NULL;
+  PetscCall(IndAssemblyJacobian(a, Uloc, K));
+  a->tangent = tangent;
+  a->insert  = insert;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+IND_GETTER(PetscBool, IndAssemblyIsFiniteStrain, IndAssembly, o->kin->large)
+IND_GETTER(IndDisc, IndAssemblyGetDisc, IndAssembly, o->disc)
+
+void IndAssemblyGetPointCounts(IndAssembly a, PetscInt *failed, PetscInt *plastic)
+{
+  if (failed) *failed = a->nfailed;
+  if (plastic) *plastic = a->nplastic;
 }

@@ -1,7 +1,29 @@
 #pragma once
-/* Private to the assembly (assembly.c: small strain and the shared loops' entry points;
-   assembly_finite.c: total Lagrangian finite strain): cell gathering and the material point. */
+/* Private to src/physics/: the fields of IndAssembly, the kinematics' table of operations (kinematics_small.c,
+   kinematics_finite.c) and the helpers of the cell loops (assembly.c): cell gathering and the material point. */
 #include "ind_assembly.h"
+
+struct _p_IndAssembly {
+  IndDisc              disc;
+  const IndDiscLayout *layout;  /* the discretisation's, read by the cell loops */
+  DM                   dm;      /* its DM (borrowed) */
+  Vec                  Xloc;    /* its node positions (borrowed) */
+  IndMaterials         mats;
+  IndHistory           history;
+  IndTangent           tangent; /* -plastic_tangent: elastic only for comparisons, it loses quadratic Newton */
+  const IndKinematics *kin;     /* -formulation */
+  IndVectorFn          body_force;
+  void                *body_ctx;
+  PetscReal           *xq;       /* with a body force: the quadrature points, ncell x nq x 3 */
+  PetscInt             nfailed;  /* local quadrature points whose return map failed, last residual */
+  PetscInt             nplastic; /* local quadrature points yielding (dp > 0), last residual */
+  PetscReal           *ue, *xe, *fe, *Ke, *G, *DB, *B; /* per-cell work arrays, allocated once */
+  Mat                  J;        /* the matrix made by IndAssemblyCreateMatrix (borrowed) */
+  IndMatInsert         insert;   /* and its cached insertion (NULL: MatSetValues) */
+};
+
+#include "material_impl.h"
+#include "history_impl.h"
 #include "ind_elasticity.h"
 #include "ind_mat3.h"
 
@@ -9,8 +31,8 @@
    Xloc) of local cell i. */
 static inline void GatherCell(IndAssembly a, PetscInt i, const PetscScalar *u, const PetscScalar *xn)
 {
-  const PetscInt *idx = a->disc->lidx + i * a->disc->ndof;
-  for (PetscInt k = 0; k < a->disc->ndof; ++k) {
+  const PetscInt *idx = a->layout->lidx + i * a->layout->ndof;
+  for (PetscInt k = 0; k < a->layout->ndof; ++k) {
     a->ue[k] = PetscRealPart(u[idx[k]]);
     a->xe[k] = PetscRealPart(xn[idx[k]]);
   }
@@ -50,18 +72,26 @@ static inline void IndDeformationGradient(PetscInt nb, const PetscReal *G, const
   for (int k = 0; k < 9; ++k) F[k] = H[k] + (k % 4 == 0 ? 1.0 : 0.0);
 }
 
-/* Finite strain at one quadrature point (assembly_finite.c), from the physical gradients G (nb x 3)
-   and the cell displacements ue: the first Piola-Kirchhoff stress P (3x3, row-major), writing the
-   trial history when trial is not NULL; and Ke += w (B^T dS/dE_GL B + geometric stiffness), B and DB
-   workspaces of 6 nd. */
-IndPlasticStatus IndFinitePointStress(const IndMaterial *m, IndTangent tangent, PetscInt nb, const PetscReal *G,
-                                      const PetscReal *ue, const PetscReal *old, PetscReal *trial, PetscReal P[9],
-                                      PetscReal *dp);
-IndPlasticStatus IndFinitePointStiffness(const IndMaterial *m, IndTangent tangent, PetscInt nb, const PetscReal *G,
-                                         const PetscReal *ue, const PetscReal *old, PetscReal w, PetscReal *B,
-                                         PetscReal *DB, PetscReal *Ke);
-/* Cauchy stress and spatial Hencky strain of a quadrature point of cell i (committed history h), from
-   the cell's displacements and gradients in the assembly's ue and G; w holds the reference weight
-   and becomes that of the current volume. */
-void IndAssemblyFinitePointFields(IndAssembly assembly, PetscInt i, const PetscReal *h, PetscReal sigma[6],
-                                  PetscReal e[6], PetscReal *w);
+/* A kinematics (-formulation): the quadrature point's operations of the cell loops (assembly.c), registered
+   by name in IndKinematicsRegistry. G holds the physical gradients (nb x 3) and ue the cell's displacements;
+   old the point's committed history, trial (if not NULL) receives its update. */
+struct _IndKinematics {
+  const char *name;
+  /* the stress that the residual integrates against G: first Piola-Kirchhoff P (3x3, row-major) */
+  IndPlasticStatus (*stress)(const IndMaterial *m, IndTangent tangent, PetscInt nb, const PetscReal *G,
+                             const PetscReal *ue, const PetscReal *old, PetscReal *trial, PetscReal P[9],
+                             PetscReal *dp);
+  /* Ke += w times the point's stiffness, on and above the diagonal; B and DB workspaces of 6 nd */
+  IndPlasticStatus (*stiffness)(const IndMaterial *m, IndTangent tangent, PetscInt nb, const PetscReal *G,
+                                const PetscReal *ue, const PetscReal *old, PetscReal w, PetscReal *B, PetscReal *DB,
+                                PetscReal *Ke);
+  /* Cauchy stress and strain of a committed point h; w holds the reference weight and becomes the current one */
+  void (*fields)(const IndMaterial *m, PetscInt nb, const PetscReal *G, const PetscReal *ue, const PetscReal *h,
+                 PetscReal sigma[6], PetscReal e[6], PetscReal *w);
+  /* large deformation: an inverted point fails the step, contact areas follow the deformed surface */
+  PetscBool large;
+};
+
+/* The kinematics registered by default. */
+const IndKinematics *IndKinematicsSmall(void);
+const IndKinematics *IndKinematicsFinite(void);

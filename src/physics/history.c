@@ -1,3 +1,4 @@
+#include "history_impl.h"
 #include "ind_history.h"
 
 #if defined(PETSC_USE_COMPLEX)
@@ -6,19 +7,23 @@
 _Static_assert(sizeof(IndPlasticState) == IND_HISTORY_DP * sizeof(PetscReal),
   "IndPlasticState must be IND_HISTORY_DP packed reals");
 
-PetscErrorCode IndHistoryCreate(IndDisc disc, IndHistory *out)
+PetscErrorCode IndHistoryCreate(IndDisc space, IndHistory *out)
 {
-  IndHistory   h;
-  PetscSection s, gs;
-  PetscInt     pStart, pEnd, n;
+  IndHistory           h;
+  PetscSection         s, gs;
+  PetscInt             pStart, pEnd, n;
+  DM                   dm;
+  const IndDiscLayout *disc;
 
   PetscFunctionBeginUser;
+  PetscCall(IndDiscGetLayout(space, &disc));
+  PetscCall(IndDiscGetDM(space, &dm));
   PetscCall(PetscCalloc1(1, &h));
   h->nq     = disc->nq;
   h->stride = disc->nq * IND_HISTORY_NVAL;
-  PetscCall(DMClone(disc->dm, &h->dm));
-  PetscCall(DMPlexGetChart(disc->dm, &pStart, &pEnd));
-  PetscCall(PetscSectionCreate(PetscObjectComm((PetscObject)disc->dm), &s));
+  PetscCall(DMClone(dm, &h->dm));
+  PetscCall(DMPlexGetChart(dm, &pStart, &pEnd));
+  PetscCall(PetscSectionCreate(PetscObjectComm((PetscObject)dm), &s));
   PetscCall(PetscSectionSetChart(s, pStart, pEnd));
   for (PetscInt i = 0; i < disc->ncell; ++i) PetscCall(PetscSectionSetDof(s, disc->cStart + i, h->stride));
   PetscCall(PetscSectionSetUp(s));
@@ -55,5 +60,30 @@ PetscErrorCode IndHistoryDestroy(IndHistory *h)
   PetscCall(VecDestroy(&(*h)->committed));
   PetscCall(DMDestroy(&(*h)->dm));
   PetscCall(PetscFree(*h));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode IndHistoryState(void *obj, IndStateFile f)
+{
+  IndHistory   h      = (IndHistory)obj;
+  PetscReal    stride = (PetscReal)h->stride;
+  PetscScalar *a;
+
+  PetscFunctionBeginUser;
+  PetscCall(IndStateReals(f, "stride", 1, &stride));
+  PetscCheck((PetscInt)stride == h->stride, PetscObjectComm((PetscObject)h->committed), PETSC_ERR_ARG_INCOMP,
+    "-restart: the checkpoint holds %" PetscInt_FMT " history values per cell, this run %" PetscInt_FMT " (another "
+    "element or quadrature)", (PetscInt)stride, h->stride);
+  PetscCall(VecGetArray(h->committed, &a));
+  PetscCall(IndStateCells(f, "committed", h->stride, (PetscReal *)a));
+  PetscCall(VecRestoreArray(h->committed, &a));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode IndHistoryGetCommitted(IndHistory h, Vec *committed, PetscInt *stride)
+{
+  PetscFunctionBeginUser;
+  if (committed) *committed = h->committed;
+  if (stride) *stride = h->stride;
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -1,17 +1,9 @@
+#include "material_impl.h"
 #include "ind_material.h"
 #include "ind_elasticity.h"
+#include "ind_hardening.h"
 
 const char *const IndModelTypes[] = {"elastic", "plastic", "IndModel", "IND_MODEL_", NULL};
-
-/* A parameter the plastic model needs and has no default for. */
-static PetscErrorCode RequirePlastic(MPI_Comm comm, const char region[], const char name[], PetscBool set,
-  const char what[])
-{
-  PetscFunctionBeginUser;
-  PetscCheck(set, comm, PETSC_ERR_ARG_WRONG,
-    "Region '%s' is plastic (-%s_model plastic) but option -%s_%s (%s) is missing", region, region, region, name, what);
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
 
 static PetscErrorCode ReadPlastic(MPI_Comm comm, const char prefix[], IndMaterial *m)
 {
@@ -23,21 +15,16 @@ static PetscErrorCode ReadPlastic(MPI_Comm comm, const char prefix[], IndMateria
   PetscCall(PetscSNPrintf(title, sizeof(title), IND_TITLE "Plasticity of volume region '%s' (-%smodel plastic)",
     m->region, prefix));
   PetscOptionsBegin(comm, prefix, title, "Material");
-  PetscCall(IndOptionsEnum("-hardening", "Isotropic hardening law", IndHardeningTypes, (PetscEnum)pp->hardening,
-    (PetscEnum *)&pp->hardening, NULL));
-  PetscCall(IndOptionsReal("-yield", "Initial yield stress R0", "GPa", IND_REQUIRED, pp->R0, &pp->R0, &set));
-  if (!IndHelpListing()) PetscCall(RequirePlastic(comm, m->region, "yield", set, "initial yield stress, GPa"));
-  if (pp->hardening == IND_HARDENING_VOCE) {
-    PetscCall(IndOptionsReal("-saturation", "Voce saturation stress Rs", "GPa", IND_REQUIRED " with voce", pp->Rs,
-      &pp->Rs, &set));
-    if (!IndHelpListing()) PetscCall(RequirePlastic(comm, m->region, "saturation", set, "Voce saturation stress, GPa"));
-    PetscCall(IndOptionsReal("-voce_rate", "Voce rate gamma", "", IND_REQUIRED " with voce", pp->gamma, &pp->gamma,
-      &set));
-    if (!IndHelpListing()) PetscCall(RequirePlastic(comm, m->region, "voce_rate", set, "Voce rate"));
-  } else {
-    PetscCall(IndOptionsReal("-hardening_slope", "Linear isotropic hardening slope h", "GPa", NULL, pp->h, &pp->h,
-      NULL));
+  {
+    char name[IND_NAME_LEN], option[2 * IND_NAME_LEN];
+    PetscCall(IndOptionsType("-hardening", "Isotropic hardening law", &IndHardeningRegistry, "voce", name,
+                             sizeof(name), NULL));
+    PetscCall(PetscSNPrintf(option, sizeof(option), "-%shardening", prefix));
+    PetscCall(IndHardeningFind(comm, option, name, &pp->law));
   }
+  PetscCall(IndOptionsReal("-yield", "Initial yield stress R0", "GPa", IND_REQUIRED, pp->R0, &pp->R0, &set));
+  if (!IndHelpListing()) PetscCall(IndHardeningRequire(comm, m->region, "yield", set, "initial yield stress, GPa"));
+  PetscCall(pp->law->read(PetscOptionsObject, comm, m->region, pp));
   PetscCall(IndOptionsReal("-kinematic", "Prager kinematic hardening modulus H", "GPa", NULL, pp->H, &pp->H, NULL));
   PetscCall(IndOptionsInt("-return_max_it", "Iteration cap of the scalar return-map solve", "0, meaning 100",
     pp->max_iterations, &pp->max_iterations, NULL));
@@ -80,23 +67,32 @@ static PetscErrorCode ReadMaterial(MPI_Comm comm, const char region[], IndMateri
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode IndMaterialsCreate(IndMesh mesh, IndDisc disc, IndMaterials *out)
+PetscErrorCode IndMaterialsCreate(IndMesh mesh, IndDisc space, IndMaterials *out)
 {
-  IndMaterials mats;
-  MPI_Comm     comm = PetscObjectComm((PetscObject)mesh->dm);
-  PetscInt     unassigned = 0, first = -1;
+  IndMaterials         mats;
+  DM                   dm;
+  MPI_Comm             comm;
+  PetscInt             unassigned = 0, first = -1, nregions;
+  const IndRegion     *regions;
+  const char          *source;
+  const IndDiscLayout *disc;
 
   PetscFunctionBeginUser;
+  PetscCall(IndMeshGetDM(mesh, &dm));
+  PetscCall(IndMeshGetRegions(mesh, &nregions, &regions));
+  PetscCall(IndMeshGetSource(mesh, &source));
+  PetscCall(IndDiscGetLayout(space, &disc));
+  comm = PetscObjectComm((PetscObject)dm);
   PetscCall(PetscCalloc1(1, &mats));
   PetscCall(PetscMalloc1(disc->ncell, &mats->cell_material));
   for (PetscInt i = 0; i < disc->ncell; ++i) mats->cell_material[i] = -1;
-  for (PetscInt r = 0; r < mesh->nregions; ++r) {
+  for (PetscInt r = 0; r < nregions; ++r) {
     DMLabel label;
     IS      cells;
-    if (mesh->regions[r].dim != 3) continue;
-    if (!IndHelpListing()) PetscCall(IndMeshCheckRegionNotEmpty(mesh, mesh->regions[r].name, 3, NULL));
-    PetscCall(ReadMaterial(comm, mesh->regions[r].name, &mats->mat[mats->n]));
-    PetscCall(DMGetLabel(mesh->dm, mesh->regions[r].name, &label));
+    if (regions[r].dim != 3) continue;
+    if (!IndHelpListing()) PetscCall(IndMeshCheckRegionNotEmpty(mesh, regions[r].name, 3, NULL));
+    PetscCall(ReadMaterial(comm, regions[r].name, &mats->mat[mats->n]));
+    PetscCall(DMGetLabel(dm, regions[r].name, &label));
     PetscCall(DMLabelGetStratumIS(label, 1, &cells));
     if (cells) {
       const PetscInt *c;
@@ -108,7 +104,7 @@ PetscErrorCode IndMaterialsCreate(IndMesh mesh, IndDisc disc, IndMaterials *out)
         if (i < 0 || i >= disc->ncell) continue;
         PetscCheck(mats->cell_material[i] < 0, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG,
           "Cell %" PetscInt_FMT " lies in two volume regions, '%s' and '%s'", c[k],
-          mats->mat[mats->cell_material[i]].region, mesh->regions[r].name);
+          mats->mat[mats->cell_material[i]].region, regions[r].name);
         mats->cell_material[i] = mats->n;
       }
       PetscCall(ISRestoreIndices(cells, &c));
@@ -123,7 +119,7 @@ PetscErrorCode IndMaterialsCreate(IndMesh mesh, IndDisc disc, IndMaterials *out)
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &unassigned, 1, MPIU_INT, MPI_SUM, comm));
   PetscCheck(!unassigned || IndHelpListing(), comm, PETSC_ERR_ARG_WRONG,
     "%" PetscInt_FMT " cells of mesh '%s' (e.g. local cell %" PetscInt_FMT ") belong to no physical volume: give every "
-    "volume a physical name in gmsh", unassigned, mesh->source, first);
+    "volume a physical name in gmsh", unassigned, source, first);
   *out = mats;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -142,4 +138,11 @@ PetscErrorCode IndMaterialsDestroy(IndMaterials *mats)
   PetscCall(PetscFree((*mats)->cell_material));
   PetscCall(PetscFree(*mats));
   PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+IND_GETTER(PetscInt, IndMaterialsGetCount, IndMaterials, o->n)
+
+const IndMaterial *IndMaterialsGet(IndMaterials mats, PetscInt k)
+{
+  return &mats->mat[k];
 }

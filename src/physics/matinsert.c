@@ -56,9 +56,13 @@ PetscErrorCode IndMatInsertCreate(IndDisc disc, Mat J, IndMatInsert *out)
     if (!any) PetscFunctionReturn(PETSC_SUCCESS); /* another matrix type (-jac_mat_type): MatSetValues */
   }
   PetscCall(PetscCalloc1(1, &m));
-  m->nb    = disc->nb;
-  m->ncell = disc->ncell;
-  m->gidx  = disc->gidx;
+  {
+    const IndDiscLayout *L;
+    PetscCall(IndDiscGetLayout(disc, &L));
+    m->nb    = L->nb;
+    m->ncell = L->ncell;
+    m->gidx  = L->gidx;
+  }
   PetscCall(MatGetOwnershipRange(J, &m->rstart, &m->rend));
   PetscCall(MatGetOwnershipRangeColumn(J, &cstart, NULL));
   if (mpi) {

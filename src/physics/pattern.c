@@ -8,7 +8,7 @@
    ranks) and J takes its rows as rows of 3 x 3 blocks. */
 
 /* The node graph: a (nodes x nodes) AIJ matrix with the local rows of the rank's owned nodes. */
-static PetscErrorCode NodeGraph(IndDisc disc, MPI_Comm comm, PetscInt nlocal, Mat *G)
+static PetscErrorCode NodeGraph(const IndDiscLayout *disc, MPI_Comm comm, PetscInt nlocal, Mat *G)
 {
   Mat          P;
   PetscInt    *nodes;
@@ -42,14 +42,16 @@ static PetscErrorCode NodeGraph(IndDisc disc, MPI_Comm comm, PetscInt nlocal, Ma
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode IndPatternFromCells(IndDisc disc, Mat J)
+PetscErrorCode IndPatternFromCells(IndDisc space, Mat J)
 {
+  const IndDiscLayout *disc;
   MPI_Comm     comm = PetscObjectComm((PetscObject)J);
   Mat          G;
   PetscInt     nlocal, rstart, rend, cstart, cend, *dnnz, *onnz, cap = 0;
   PetscScalar *zeros = NULL;
 
   PetscFunctionBeginUser;
+  PetscCall(IndDiscGetLayout(space, &disc));
   PetscCall(MatGetLocalSize(J, &nlocal, NULL));
   PetscCheck(nlocal % 3 == 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "%" PetscInt_FMT " local rows: not nodes of 3 dofs",
     nlocal);

@@ -1,18 +1,14 @@
 #include <math.h>
 #include "ind_plasticity.h"
 
-const char *const IndHardeningTypes[] = {"voce", "linear", "IndHardening", "IND_HARDENING_", NULL};
-
 PetscReal IndPlasticR(const IndPlasticParams *m, PetscReal p)
 {
-  if (m->hardening == IND_HARDENING_LINEAR) return m->R0 + m->h * p;
-  return m->Rs - (m->Rs - m->R0) * PetscExpReal(-m->gamma * p);
+  return m->law->R(m, p);
 }
 
 PetscReal IndPlasticdR(const IndPlasticParams *m, PetscReal p)
 {
-  if (m->hardening == IND_HARDENING_LINEAR) return m->h;
-  return m->gamma * (m->Rs - m->R0) * PetscExpReal(-m->gamma * p);
+  return m->law->dR(m, p);
 }
 
 PetscErrorCode IndPlasticParamsCheck(const IndPlasticParams *m, const char prefix[], MPI_Comm comm)
@@ -28,25 +24,8 @@ PetscErrorCode IndPlasticParamsCheck(const IndPlasticParams *m, const char prefi
   PetscCheck(m->H >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-%skinematic must be >= 0 (GPa), got %g", pre, (double)m->H);
   PetscCheck(m->max_iterations >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE,
     "-%sreturn_max_it must be >= 0 (0: the default, 100), got %" PetscInt_FMT, pre, m->max_iterations);
-  switch (m->hardening) {
-  case IND_HARDENING_VOCE:
-    PetscCheck(m->Rs > 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-%ssaturation must be > 0 (GPa), got %g", pre,
-      (double)m->Rs);
-    PetscCheck(m->gamma >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-%svoce_rate must be >= 0, got %g", pre,
-      (double)m->gamma);
-    /* Softening (Rs < R0) is allowed while the return equation stays strictly decreasing in dp,
-       which keeps its root unique and the tangent finite. */
-    PetscCheck(m->gamma * (m->R0 - m->Rs) < 3.0 * m->mu + m->H, comm, PETSC_ERR_ARG_OUTOFRANGE,
-               "Voce softening too steep: -%svoce_rate * (-%syield - -%ssaturation) = %g GPa must be < 3 mu + H = %g "
-                 "GPa", pre, pre, pre, (double)(m->gamma * (m->R0 - m->Rs)), (double)(3.0 * m->mu + m->H));
-    break;
-  case IND_HARDENING_LINEAR:
-    PetscCheck(m->h >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-%shardening_slope must be >= 0 (GPa), got %g", pre,
-      (double)m->h);
-    break;
-  default:
-    SETERRQ(comm, PETSC_ERR_ARG_OUTOFRANGE, "Unknown hardening law %d for region prefix '%s'", (int)m->hardening, pre);
-  }
+  PetscCheck(m->law, comm, PETSC_ERR_ARG_WRONGSTATE, "No hardening law for region prefix '%s'", pre);
+  PetscCall(m->law->check(m, pre, comm));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -1,4 +1,5 @@
 #define _POSIX_C_SOURCE 200809L /* sigaction, gmtime_r, strtok_r */
+#include "app_impl.h"
 #include <signal.h>
 #include <stdio.h>
 #include <string.h>
@@ -13,8 +14,6 @@
 #include "ind_stepcsv.h"
 #include "runwrite.h"
 
-const char *const IndPredictorTypes[] = {"extrapolate", "tangent", "none", "IndPredictor", "IND_PREDICTOR_", NULL};
-
 PetscErrorCode IndAppCreate(MPI_Comm comm, IndApp *out)
 {
   IndApp   app;
@@ -23,14 +22,13 @@ PetscErrorCode IndAppCreate(MPI_Comm comm, IndApp *out)
   PetscFunctionBeginUser;
   PetscCall(IndLogRegister());
   PetscCall(PetscCalloc1(1, &app));
-  app->comm      = comm;
-  app->predictor = IND_PREDICTOR_EXTRAPOLATE;
+  app->comm = comm;
   /* From the start: a signal during the set-up (meshing, distribution) stops the run before its first step. */
   PetscCall(IndSignalsInstall());
   app->checkpoint_every = 10;
   app->stop_after       = -1;
   app->checkpointed     = -1;
-  app->depth_trial      = -1;
+  app->depth_start      = -1;
   PetscCall(PetscTime(&app->t_start));
   {
     time_t    now = time(NULL);
@@ -39,9 +37,6 @@ PetscErrorCode IndAppCreate(MPI_Comm comm, IndApp *out)
     strftime(app->start_time, sizeof(app->start_time), "%Y-%m-%dT%H:%M:%SZ", &utc);
   }
   PetscOptionsBegin(comm, NULL, IND_TITLE "Run", "Run");
-  PetscCall(IndOptionsEnum("-load_predictor", "Start of each step's Newton iteration", IndPredictorTypes,
-    (PetscEnum)app->predictor,
-                           (PetscEnum *)&app->predictor, NULL));
   PetscCall(IndOptionsBool("-quiet", "Print nothing but errors and warnings", app->quiet, &app->quiet, NULL));
   PetscCall(IndOptionsInt("-checkpoint_every",
     "Write <output_dir>/checkpoint.h5 every N accepted steps (0: only on SIGTERM, SIGINT, SIGUSR1)",
@@ -87,44 +82,57 @@ PetscErrorCode IndAppCreate(MPI_Comm comm, IndApp *out)
   if (app->scratch.length > 0) IndLoadPathSetScratch(&app->path, app->scratch.steps);
   PetscCall(IndHistoryCreate(app->disc, &app->history));
   PetscCall(IndAssemblyCreate(app->disc, app->mats, app->history, &app->assembly));
-  if (app->contact)
-    PetscCall(IndContactSetCurrentAreas(app->contact, app->assembly->formulation == IND_FORMULATION_FINITE));
-  PetscCall(IndSolverCreate(app->disc->dm, app->assembly, app->bc, app->contact, app->path.depth_max, &app->solver));
-  if (app->path.force_max > 0)
+  if (app->contact) PetscCall(IndContactSetCurrentAreas(app->contact, IndAssemblyIsFiniteStrain(app->assembly)));
+  {
+    DM dm;
+    PetscCall(IndDiscGetDM(app->disc, &dm));
+    PetscCall(IndSolverCreate(dm, app->assembly, app->bc, app->contact, app->path.depth_max, &app->solver));
+    PetscCall(DMCreateGlobalVector(dm, &app->U));
+  }
+  if (app->path.force_max > 0) {
     PetscCall(
       IndSolverSetLoadControl(app->solver, app->path.depth_max, app->path.force_rtol * app->path.force_max * 1e3));
+    PetscCall(IndLoadControlCreate(&app->control));
+  }
   PetscCall(IndOutputCreate(app->mesh, app->disc, &app->output));
   PetscCall(IndOutputSetContact(app->output, app->contact));
   if (app->contact) PetscCall(IndSummaryCreate(comm, &app->summary));
-  PetscCall(DMCreateGlobalVector(app->disc->dm, &app->U));
   PetscCall(PetscObjectSetName((PetscObject)app->U, "displacement"));
   PetscCall(VecZeroEntries(app->U));
   PetscCall(VecDuplicate(app->U, &app->Uprev));
-  PetscCall(VecDuplicate(app->U, &app->dU));
+  PetscCall(IndPredictorCreate(comm, app->U, &app->predictor));
   PetscCall(PetscLogStagePop());
   PetscCall(IndOptionsCheckUnused(comm));
   if (app->rundir.restart) {
-    IndSummary sum = app->summary;
-    PetscCall(IndCheckpointRead(app, app->rundir.restart_file));
+    PetscInt             npts = 0;
+    const IndCurvePoint *pts  = NULL;
+    PetscCall(IndAppCheckpoint(app, app->rundir.restart_file, FILE_MODE_READ));
+    if (app->summary) PetscCall(IndSummaryGetPoints(app->summary, &npts, &pts));
     if (!strcmp(app->rundir.restart_file, app->rundir.checkpoint)) app->checkpointed = app->path.accepted;
     PetscCall(IndAppRemoveStopMarker(app)); /* this part may stop for its own reasons */
     PetscCall(IndStepCSVTruncate(comm, app->rundir.dir, IND_CSM_FILE, app->path.accepted));
     PetscCall(IndStepCSVTruncate(comm, app->rundir.dir, IND_SCRATCH_FILE, app->path.accepted));
-    PetscCall(IndOutputResume(app->output, sum ? sum->n : 0, sum ? sum->pts : NULL));
+    PetscCall(IndOutputResume(app->output, npts, pts));
   }
 
   PetscCall(
     IndOutputCheckSize(app->output, IndLoadPathStepsLeft(&app->path, IND_MAX_OUTPUT_STEPS + 1), &app->warnings));
   PetscCall(VecGetSize(app->U, &ndof));
-  ncell = app->disc->ncell;
-  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &ncell, 1, MPIU_INT, MPI_SUM, comm));
-  if (!app->quiet) {
-    PetscMPIInt size;
-    PetscCallMPI(MPI_Comm_size(comm, &size));
-    PetscCall(PetscPrintf(comm,
-      "indent: mesh %s, %" PetscInt_FMT " %s, %s%" PetscInt_FMT " elements, %" PetscInt_FMT " dofs, %d rank%s\n",
-      app->mesh->source, ncell, app->mesh->simplex ? "tetrahedra" : "hexahedra",
-                          app->mesh->simplex ? "P" : "Q", app->disc->degree, ndof, size, size > 1 ? "s" : ""));
+  {
+    const IndDiscLayout *L;
+    PetscCall(IndDiscGetLayout(app->disc, &L));
+    ncell = L->ncell;
+    PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &ncell, 1, MPIU_INT, MPI_SUM, comm));
+    if (!app->quiet) {
+      PetscMPIInt size;
+      const char *source;
+      PetscCall(IndMeshGetSource(app->mesh, &source));
+      PetscCallMPI(MPI_Comm_size(comm, &size));
+      PetscCall(PetscPrintf(comm,
+        "indent: mesh %s, %" PetscInt_FMT " %s, %s%" PetscInt_FMT " elements, %" PetscInt_FMT " dofs, %d rank%s\n",
+        source, ncell, L->simplex ? "tetrahedra" : "hexahedra", L->simplex ? "P" : "Q", L->degree, ndof, size,
+        size > 1 ? "s" : ""));
+    }
   }
   *out = app;
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -158,47 +166,50 @@ static PetscReal SlideAt(IndApp app, PetscReal t)
   return app->scratch.length * IndLoadPathScratchFraction(&app->path, t);
 }
 
-/* The converged state U becomes the accepted one. */
-static PetscErrorCode AcceptStep(IndApp app, PetscReal lambda_old, IndStepResult *r)
+/* The step about to be solved, against the accepted state, as the predictor sees it. */
+static IndPredictorStep StepOf(IndApp app, const IndStepResult *r)
 {
+  IndPredictorStep st;
+  st.lambda_old = IndLoadPathFactor(&app->path, app->path.t);
+  st.lambda     = r->lambda;
+  st.depth_old  = app->contact ? IndContactGetCommittedDepth(app->contact) : 0;
+  st.depth      = r->depth;
+  st.slide_old  = SlideAt(app, app->path.t);
+  st.slide      = r->slide;
+  st.by_depth   = app->depth_start >= 0 ? PETSC_TRUE : PETSC_FALSE;
+  return st;
+}
+
+/* The converged state U becomes the accepted one. */
+static PetscErrorCode AcceptStep(IndApp app, IndStepResult *r)
+{
+  const IndPredictorStep st = StepOf(app, r);
+
   PetscFunctionBeginUser;
   PetscCall(IndSolverCommit(app->solver, app->U));
-  r->plastic = app->solver->nplastic;
-  if (app->path.force_max > 0) { /* load control: the next step's depth predictor */
-    const PetscReal load = r->contact.load * 1e-3, dd = r->depth - app->contact->depth_c;
-    if (dd != 0 && (load - app->load_last) / dd > 0) app->slope_last = (load - app->load_last) / dd;
-    app->load_last = load;
-  }
-  if (app->contact) {
-    app->ddepth_last = r->depth - app->contact->depth_c;
-    app->dslide_last = r->slide - SlideAt(app, app->path.t);
-    PetscCall(IndContactCommit(app->contact, app->U));
-  }
-  PetscCall(VecWAXPY(app->dU, -1.0, app->Uprev, app->U));
-  app->dlambda_last = r->lambda - lambda_old;
+  r->plastic = IndSolverPlasticPoints(app->solver);
+  if (app->control) IndLoadControlAccept(app->control, r->contact.load * 1e-3, st.depth - st.depth_old);
+  if (app->contact) PetscCall(IndContactCommit(app->contact, app->U));
+  PetscCall(IndPredictorAccept(app->predictor, &st, app->U, app->Uprev));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 /* Load control: the depth is an unknown of the step's Newton iteration (bordered.c), which starts from
-   the depth that the last step's dP/dh predicts for P* (at first, the load program's share of
-   -load_depth; in a slide, the accepted depth). */
+   the depth the load control object predicts for P*. */
 static PetscErrorCode SolveLoadStep(IndApp app, PetscReal t, IndStepResult *r)
 {
   IndLoadPath    *lp     = &app->path;
   const PetscReal lambda = IndLoadPathFactor(lp, t);
   const PetscReal target = lp->force_max * (IndLoadPathUnloading(lp, t) ? PetscMax(lambda, lp->unload_to) : lambda);
-  const PetscReal d_c    = app->contact->depth_c;
-  PetscReal       d0     = d_c, load = 0;
+  const PetscBool sliding = SlideAt(app, t) != SlideAt(app, lp->t) ? PETSC_TRUE : PETSC_FALSE;
+  PetscReal       load    = 0;
 
   PetscFunctionBeginUser;
-  if (SlideAt(app, t) == SlideAt(app, lp->t)) {
-    if (app->slope_last > 0) d0 = d_c + (target - app->load_last) / app->slope_last;
-    else if (lp->accepted == 0) d0 = lp->depth_max * lambda;
-  }
-  app->depth_trial = PetscMin(PetscMax(d0, 0.0), lp->depth_max);
+  app->depth_start = IndLoadControlStartDepth(app->control, lp, lambda, target,
+                                              IndContactGetCommittedDepth(app->contact), sliding);
   PetscCall(IndSolverSetLoadTarget(app->solver, target * 1e3));
   PetscCall(IndAppSolveStep(app, t, r));
-  app->depth_trial = -1;
+  app->depth_start = -1;
   PetscCheck(r->converged || !IndSolverLoadOutOfReach(app->solver, &load), app->comm, PETSC_ERR_USER_INPUT,
              "-load_force %g uN is out of reach: at -load_depth %g nm, the largest depth allowed, the load is %g uN; "
              "raise -load_depth (within the body) or lower -load_force",
@@ -208,16 +219,16 @@ static PetscErrorCode SolveLoadStep(IndApp app, PetscReal t, IndStepResult *r)
 
 PetscErrorCode IndAppSolveStep(IndApp app, PetscReal t, IndStepResult *r)
 {
-  IndSolver       s          = app->solver;
-  const PetscReal lambda_old = IndLoadPathFactor(&app->path, app->path.t);
-  IndSolveResult  sr;
-  PetscLogDouble  t0, t1;
+  IndSolver        s = app->solver;
+  IndSolveResult   sr;
+  IndPredictorStep st;
+  PetscLogDouble   t0, t1;
 
   PetscFunctionBeginUser;
   PetscCall(PetscMemzero(r, sizeof(*r)));
   r->t      = t;
   r->lambda = IndLoadPathFactor(&app->path, t);
-  r->depth  = app->depth_trial >= 0 ? app->depth_trial : app->path.depth_max * r->lambda;
+  r->depth  = app->depth_start >= 0 ? app->depth_start : app->path.depth_max * r->lambda;
   r->slide  = SlideAt(app, t);
   PetscCall(PetscTime(&t0));
   PetscCall(PetscLogStagePush(IndLog.solve));
@@ -227,36 +238,20 @@ PetscErrorCode IndAppSolveStep(IndApp app, PetscReal t, IndStepResult *r)
     IndScratchAxis(&app->scratch, IndLoadPathScratchFraction(&app->path, t), axis);
     PetscCall(IndContactSetIndenterPosition(app->contact, r->depth, axis));
   }
-  /* The prescribed values alone would strain only the boundary layer of cells, which then yields in
-     the first iterate and sends Newton astray; either predictor starts it near the answer. The last
-     increment is scaled by the change of load factor; a hold or a reversal takes the tangent
-     response instead (for an indenter alone, the last state). */
-  /* Not across a reversal: unloading from a plastic state is nothing like the loading increment
-     reversed (that guess made Newton diverge 9 times in a row on a Vickers indentation). */
-  /* Under load control the depth drives the step: the increment is scaled by the change of depth. A
-     slide drives it in a scratch: the last slide's increment, scaled (at its start, the accepted state). */
-  if (r->slide > SlideAt(app, app->path.t)) {
-    if (app->predictor == IND_PREDICTOR_EXTRAPOLATE && app->dslide_last > 0)
-      PetscCall(VecAXPY(app->U, (r->slide - SlideAt(app, app->path.t)) / app->dslide_last, app->dU));
-  } else if (app->depth_trial >= 0) {
-    const PetscReal ratio = app->ddepth_last != 0 ? (r->depth - app->contact->depth_c) / app->ddepth_last : 0;
-    if (app->predictor == IND_PREDICTOR_EXTRAPOLATE && ratio > 0) PetscCall(VecAXPY(app->U, ratio, app->dU));
-    else if (app->predictor != IND_PREDICTOR_NONE) PetscCall(IndSolverPredict(s, lambda_old, r->lambda, app->U));
-  } else if (app->predictor == IND_PREDICTOR_EXTRAPOLATE && (r->lambda - lambda_old) * app->dlambda_last > 0)
-    PetscCall(VecAXPY(app->U, (r->lambda - lambda_old) / app->dlambda_last, app->dU));
-  else if (app->predictor != IND_PREDICTOR_NONE) PetscCall(IndSolverPredict(s, lambda_old, r->lambda, app->U));
+  st = StepOf(app, r);
+  PetscCall(IndPredictorApply(app->predictor, s, &st, app->U));
   PetscCall(IndSolverSolve(s, r->lambda, app->U, &sr));
-  if (app->path.force_max > 0) r->depth = IndContactGetDepth(app->contact); /* an unknown of the solve */
+  if (app->control) r->depth = IndContactGetDepth(app->contact); /* an unknown of the solve */
   r->reason    = sr.reason;
   r->newton    = sr.newton;
   r->linear    = sr.linear;
   r->outer     = sr.outer;
   r->contact   = sr.contact;
-  r->failed    = s->nfailed;
+  r->failed    = IndSolverFailedPoints(s);
   r->converged = sr.converged;
   PetscCall(PetscStrncpy(r->why, sr.why, sizeof(r->why)));
   if (r->converged) {
-    PetscCall(AcceptStep(app, lambda_old, r));
+    PetscCall(AcceptStep(app, r));
   } else {
     PetscCall(VecCopy(app->Uprev, app->U));
     if (app->contact) PetscCall(IndContactRollback(app->contact));
@@ -267,24 +262,22 @@ PetscErrorCode IndAppSolveStep(IndApp app, PetscReal t, IndStepResult *r)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* A signal came: the state of the last accepted step goes to the checkpoint, and the run ends. */
-static PetscErrorCode Stop(IndApp app, int signum)
+PetscErrorCode IndAppStep(IndApp app, IndStepResult *r)
 {
-  const char *name = IndSignalName(signum);
+  IndLoadPath    *lp = &app->path;
+  const PetscReal t  = IndLoadPathTarget(lp);
 
   PetscFunctionBeginUser;
-  PetscCall(IndAppWriteCheckpoint(app, PETSC_TRUE));
-  app->stopped = signum;
-  if (app->rundir.ready) PetscCall(IndAppWriteStopMarker(app, name));
-  if (app->rundir.ready)
-    PetscCall(PetscPrintf(app->comm,
-                          "indent: stopped by %s after step %" PetscInt_FMT "; checkpoint %s written: "
-                          "continue with the same options and -restart %s\n",
-                          name, app->path.accepted, app->rundir.checkpoint, app->rundir.dir));
-  else
-    PetscCall(PetscPrintf(app->comm,
-      "indent: stopped by %s after step %" PetscInt_FMT " (no files, so no checkpoint)\n",
-                          name, app->path.accepted));
+  if (app->control) PetscCall(SolveLoadStep(app, t, r));
+  else PetscCall(IndAppSolveStep(app, t, r));
+  if (!r->converged) {
+    if (!app->quiet) PetscCall(PetscPrintf(app->comm, "  step to t = %.6f rejected (%s): cutting the increment\n",
+      (double)t, r->why));
+    PetscCall(IndLoadPathReject(lp, app->comm, r->why));
+  } else {
+    /* With contact, Newton runs once per outer iteration: judge the step by its average. */
+    IndLoadPathAccept(lp, r->outer > 1 ? (r->newton + r->outer - 1) / r->outer : r->newton);
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -296,7 +289,7 @@ PetscErrorCode IndAppRun(IndApp app)
   if (app->rundir.restart && !app->quiet)
     PetscCall(PetscPrintf(app->comm, "indent: continuing from %s after step %" PetscInt_FMT " (depth %g nm)\n",
                           app->rundir.restart_file, lp->accepted,
-                          app->contact ? (double)app->contact->indenter.depth : 0.0));
+                          app->contact ? (double)IndContactGetDepth(app->contact) : 0.0));
   while (!IndLoadPathDone(lp)) {
     const PetscReal t = IndLoadPathTarget(lp);
     IndStepResult   r;
@@ -304,20 +297,12 @@ PetscErrorCode IndAppRun(IndApp app)
 
     PetscCall(IndSignalsPending(app->comm, &signum));
     if (signum) {
-      PetscCall(Stop(app, signum));
+      PetscCall(IndAppStop(app, signum));
       break;
     }
 
-    if (lp->force_max > 0) PetscCall(SolveLoadStep(app, t, &r));
-    else PetscCall(IndAppSolveStep(app, t, &r));
-    if (!r.converged) {
-      if (!app->quiet) PetscCall(PetscPrintf(app->comm, "  step to t = %.6f rejected (%s): cutting the increment\n",
-        (double)t, r.why));
-      PetscCall(IndLoadPathReject(lp, app->comm, r.why));
-      continue;
-    }
-    /* With contact, Newton runs once per outer iteration: judge the step by its average. */
-    IndLoadPathAccept(lp, r.outer > 1 ? (r.newton + r.outer - 1) / r.outer : r.newton);
+    PetscCall(IndAppStep(app, &r));
+    if (!r.converged) continue;
     if (!app->quiet) {
       if (app->contact)
         PetscCall(PetscPrintf(app->comm,
@@ -354,7 +339,8 @@ PetscErrorCode IndAppRun(IndApp app)
         r.contact.contact > 0 &&
         lp->accepted % app->csm_every == 0) {
       IndCSMPoint csm;
-      PetscCall(IndCSMStiffness(app, r.depth, r.contact.load * 1e-3, r.contact.area, &csm));
+      PetscCall(IndCSMStiffness(app->solver, app->bc, app->contact, IndSummaryGetOPParams(app->summary), app->U,
+                                r.depth, r.contact.load * 1e-3, r.contact.area, &csm));
       if (app->rundir.ready) PetscCall(IndCSMWrite(app->comm, app->rundir.dir, lp->accepted, r.depth,
         r.contact.load * 1e-3, &csm));
       if (!app->quiet)
@@ -384,10 +370,7 @@ PetscErrorCode IndAppRun(IndApp app)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-int IndAppStoppedBy(IndApp app)
-{
-  return app->stopped;
-}
+IND_GETTER(int, IndAppStoppedBy, IndApp, o->stopped)
 
 PetscErrorCode IndAppDestroy(IndApp *app)
 {
@@ -396,7 +379,8 @@ PetscErrorCode IndAppDestroy(IndApp *app)
   PetscCall(IndSignalsRestore());
   PetscCall(VecDestroy(&(*app)->U));
   PetscCall(VecDestroy(&(*app)->Uprev));
-  PetscCall(VecDestroy(&(*app)->dU));
+  PetscCall(IndPredictorDestroy(&(*app)->predictor));
+  PetscCall(IndLoadControlDestroy(&(*app)->control));
   PetscCall(IndOutputDestroy(&(*app)->output));
   PetscCall(IndSolverDestroy(&(*app)->solver));
   PetscCall(IndAssemblyDestroy(&(*app)->assembly));
@@ -409,4 +393,25 @@ PetscErrorCode IndAppDestroy(IndApp *app)
   PetscCall(IndMeshDestroy(&(*app)->mesh));
   PetscCall(PetscFree(*app));
   PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+IND_GETTER(MPI_Comm, IndAppGetComm, IndApp, o->comm)
+IND_GETTER(IndMesh, IndAppGetMesh, IndApp, o->mesh)
+IND_GETTER(IndDisc, IndAppGetDisc, IndApp, o->disc)
+IND_GETTER(IndMaterials, IndAppGetMaterials, IndApp, o->mats)
+IND_GETTER(IndHistory, IndAppGetHistory, IndApp, o->history)
+IND_GETTER(IndBC, IndAppGetBC, IndApp, o->bc)
+IND_GETTER(IndContact, IndAppGetContact, IndApp, o->contact)
+IND_GETTER(IndAssembly, IndAppGetAssembly, IndApp, o->assembly)
+IND_GETTER(IndSolver, IndAppGetSolver, IndApp, o->solver)
+IND_GETTER(IndOutput, IndAppGetOutput, IndApp, o->output)
+IND_GETTER(IndSummary, IndAppGetSummary, IndApp, o->summary)
+IND_GETTER(const IndLoadPath *, IndAppGetLoadPath, IndApp, &o->path)
+IND_GETTER(Vec, IndAppGetSolution, IndApp, o->U)
+
+DM IndAppGetDM(IndApp app)
+{
+  DM dm;
+  (void)IndDiscGetDM(app->disc, &dm);
+  return dm;
 }

@@ -28,13 +28,13 @@ PetscErrorCode IndBorderedCreate(IndContact contact, Vec U, PetscReal depth_max,
   IndBordered b;
 
   PetscFunctionBeginUser;
-  PetscCheck(contact && contact->variant == IND_UZAWA_NEWTON, PetscObjectComm((PetscObject)U), PETSC_ERR_ARG_INCOMP,
+  PetscCheck(contact && IndContactReactionsFromResidual(contact), PetscObjectComm((PetscObject)U), PETSC_ERR_ARG_INCOMP,
              "-load_force needs -contact_uzawa newton: load control makes the depth an unknown of the Newton "
              "iteration, and the fixed point freezes the reactions within it");
   PetscCall(PetscNew(&b));
   b->contact   = contact;
   b->depth_max = depth_max;
-  b->tol       = load_tol / contact->symmetry;
+  b->tol       = load_tol / IndContactGetSymmetry(contact);
   PetscCall(VecDuplicate(U, &b->e));
   PetscCall(VecDuplicate(U, &b->p));
   PetscCall(VecDuplicate(U, &b->Fd));
@@ -59,7 +59,7 @@ PetscErrorCode IndBorderedDestroy(IndBordered *b)
 PetscErrorCode IndBorderedSetTarget(IndBordered b, PetscReal load)
 {
   PetscFunctionBeginUser;
-  b->target  = load / b->contact->symmetry;
+  b->target  = load / IndContactGetSymmetry(b->contact);
   b->limited = PETSC_FALSE;
   b->linear  = 0;
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -82,7 +82,7 @@ PetscReal IndBorderedLoadResidual(IndBordered b)
 
 PetscReal IndBorderedLoad(IndBordered b)
 {
-  return (b->target + b->c) * b->contact->symmetry;
+  return (b->target + b->c) * IndContactGetSymmetry(b->contact);
 }
 
 PetscBool IndBorderedLoadMet(IndBordered b)

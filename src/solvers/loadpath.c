@@ -190,3 +190,18 @@ PetscErrorCode IndLoadPathReject(IndLoadPath *lp, MPI_Comm comm, const char why[
     (double)lp->t, why, (double)lp->dt, (double)lp->dt_min);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
+
+PetscErrorCode IndLoadPathState(void *obj, IndStateFile f)
+{
+  IndLoadPath *lp   = (IndLoadPath *)obj;
+  PetscReal    s[5] = {lp->t, lp->dt, (PetscReal)lp->accepted, (PetscReal)lp->cutbacks, (PetscReal)lp->cutbacks_in_a_row};
+
+  PetscFunctionBeginUser;
+  PetscCall(IndStateReals(f, "position", 5, s));
+  lp->t                 = s[0];
+  lp->dt                = s[1];
+  lp->accepted          = (PetscInt)s[2];
+  lp->cutbacks          = (PetscInt)s[3];
+  lp->cutbacks_in_a_row = (PetscInt)s[4];
+  PetscFunctionReturn(PETSC_SUCCESS);
+}

@@ -2,6 +2,7 @@
 #include <stdio.h>
 #include <string.h>
 #include <sys/stat.h>
+#include "app_impl.h"
 #include "runwrite.h"
 #include "ind_checkpoint.h"
 #include "ind_iofault.h"
@@ -26,7 +27,7 @@ static PetscErrorCode Checkpoint(IndApp app, PetscBool stopping)
   PetscCall(IndAppElapsed(app));
   PetscCall(PetscTime(&t0));
   IndSignalsDeferBegin(); /* a second Ctrl-C must not leave half a checkpoint */
-  PetscCall(IndCheckpointWrite(app, app->rundir.checkpoint));
+  PetscCall(IndAppCheckpoint(app, app->rundir.checkpoint, FILE_MODE_WRITE));
   app->checkpointed = app->path.accepted;
   IndSignalsDeferEnd(stopping);
   PetscCall(PetscTime(&t1));
@@ -65,15 +66,15 @@ static PetscErrorCode WriteStepFiles(IndApp app, const void *a, const void *b, c
   IndLoadPath         *lp = &app->path;
 
   PetscFunctionBeginUser;
-  PetscCall(PetscSNPrintf(file, len, "%s", app->output->h5name));
-  if (app->output->enabled) {
+  PetscCall(PetscSNPrintf(file, len, "%s", IndOutputGetFieldFile(app->output)));
+  if (IndOutputFieldsEnabled(app->output)) {
     PetscReal bytes;
     PetscCall(IndOutputBytesPerStep(app->output, &bytes));
     PetscCall(IndIOFaultCheckRoom(app->comm, file, 1.05 * bytes + (1 << 16)));
   }
   PetscCall(IndOutputWriteStep(app->output, app->contact ? r->depth : r->lambda, app->U, app->assembly));
   if (p) {
-    PetscCall(PetscSNPrintf(file, len, "%s/load_displacement.csv", app->output->dir));
+    PetscCall(PetscSNPrintf(file, len, "%s/load_displacement.csv", IndOutputGetDir(app->output)));
     PetscCall(IndOutputCurvePoint(app->output, p));
   }
   if (app->scratch.length > 0 && app->rundir.ready) {
@@ -89,13 +90,16 @@ static PetscErrorCode WriteStepFiles(IndApp app, const void *a, const void *b, c
 static double CheckpointBytes(IndApp app)
 {
   struct stat st;
-  PetscInt    ndof = 0, nhist = 0;
+  PetscInt    ndof = 0, nhist = 0, stride = 1;
+  Vec         H;
 
   if (!stat(app->rundir.checkpoint, &st)) return 1.1 * (double)st.st_size + (1 << 16);
-  /* per node its 3 keys and 9 values (U, dU, contact), per cell its 3 keys and its history */
+  /* per node its 3 keys and 12 values (U, dU, the contact's reactions and displacements), per cell its 3 keys
+     and its history */
   (void)VecGetSize(app->U, &ndof);
-  (void)VecGetSize(app->history->committed, &nhist);
-  return 1.25 * 8.0 * (4.0 * (double)ndof + (double)nhist * (1.0 + 3.0 / (double)app->history->stride)) + (1 << 16);
+  (void)IndHistoryGetCommitted(app->history, &H, &stride);
+  (void)VecGetSize(H, &nhist);
+  return 1.25 * 8.0 * (5.0 * (double)ndof + (double)nhist * (1.0 + 3.0 / (double)stride)) + (1 << 16);
 }
 
 static PetscErrorCode WriteCheckpointPhase(IndApp app, PetscBool stopping, char file[], size_t len)
@@ -131,9 +135,10 @@ static PetscErrorCode WriteSummary(IndApp app, const void *a, const void *b, cha
 {
   PetscFunctionBeginUser;
   (void)b;
-  PetscCall(PetscSNPrintf(file, len, "%s/summary.txt and summary.json", app->output->dir));
-  PetscCall(IndSummaryFinish(app->summary, &app->contact->indenter, (const IndRunInfo *)a, app->output->dir,
-                             app->output->curve, app->quiet ? PETSC_FALSE : PETSC_TRUE));
+  PetscCall(PetscSNPrintf(file, len, "%s/summary.txt and summary.json", IndOutputGetDir(app->output)));
+  PetscCall(IndSummaryFinish(app->summary, IndContactGetIndenter(app->contact), (const IndRunInfo *)a,
+                             IndOutputGetDir(app->output),
+                             IndOutputCurveEnabled(app->output), app->quiet ? PETSC_FALSE : PETSC_TRUE));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -243,5 +248,26 @@ PetscErrorCode IndAppWriteSummary(IndApp app, const IndRunInfo *info)
 {
   PetscFunctionBeginUser;
   PetscCall(GuardedWrite(app, WriteSummary, info, NULL));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* A signal came: the state of the last accepted step goes to the checkpoint, and the run ends. */
+PetscErrorCode IndAppStop(IndApp app, int signum)
+{
+  const char *name = IndSignalName(signum);
+
+  PetscFunctionBeginUser;
+  PetscCall(IndAppWriteCheckpoint(app, PETSC_TRUE));
+  app->stopped = signum;
+  if (app->rundir.ready) PetscCall(IndAppWriteStopMarker(app, name));
+  if (app->rundir.ready)
+    PetscCall(PetscPrintf(app->comm,
+                          "indent: stopped by %s after step %" PetscInt_FMT "; checkpoint %s written: "
+                          "continue with the same options and -restart %s\n",
+                          name, app->path.accepted, app->rundir.checkpoint, app->rundir.dir));
+  else
+    PetscCall(PetscPrintf(app->comm,
+      "indent: stopped by %s after step %" PetscInt_FMT " (no files, so no checkpoint)\n",
+                          name, app->path.accepted));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

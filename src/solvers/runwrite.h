@@ -17,5 +17,8 @@ PetscErrorCode IndAppWriteSummary(IndApp app, const IndRunInfo *info);
 PetscErrorCode IndAppWriteStopMarker(IndApp app, const char signal[]);
 /* The marker of an earlier part, by the restart that continues it. */
 PetscErrorCode IndAppRemoveStopMarker(IndApp app);
+/* A stop signal came (signum): the checkpoint of the last accepted step, the stop marker, and the line saying
+   how to continue; the run loop then ends. */
+PetscErrorCode IndAppStop(IndApp app, int signum);
 /* A finished run's checkpoints (this one and the previous), which could only restart a finished run. */
 PetscErrorCode IndAppRemoveCheckpoint(IndApp app);

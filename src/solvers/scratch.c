@@ -45,31 +45,37 @@ PetscErrorCode IndScratchSetFromOptions(MPI_Comm comm, PetscBool indenter, IndSc
 
 PetscErrorCode IndScratchSetUp(IndScratch *s, IndContact c, IndBC bc)
 {
-  const IndIndenter *ind = &c->indenter;
-  PetscReal          end[2];
+  const IndIndenter *ind  = IndContactGetIndenter(c);
+  MPI_Comm           comm = IndContactGetComm(c);
+  PetscReal          end[2], extent[4];
+  PetscInt           nspec;
+  const IndBCSpec   *spec;
+  const char        *surface;
 
   PetscFunctionBeginUser;
+  PetscCall(IndBCGetSpecs(bc, &nspec, &spec));
+  PetscCall(IndContactGetSurface(c, &surface, extent));
   s->origin[0] = ind->axis[0];
   s->origin[1] = ind->axis[1];
   if (s->length == 0) PetscFunctionReturn(PETSC_SUCCESS);
-  for (PetscInt k = 0; k < bc->nspec; ++k) {
-    const int n = IndContactPlaneThroughAxis(&bc->spec[k], ind);
+  for (PetscInt k = 0; k < nspec; ++k) {
+    const int n = IndContactPlaneThroughAxis(&spec[k], ind);
     /* The mirror image of the indenter slides with it only along the plane. */
-    PetscCheck(!n || PetscAbsReal(s->dir[n - 1]) <= 1e-12, c->comm, PETSC_ERR_ARG_INCOMP,
+    PetscCheck(!n || PetscAbsReal(s->dir[n - 1]) <= 1e-12, comm, PETSC_ERR_ARG_INCOMP,
                "-scratch_direction %.6g,%.6g leaves the symmetry plane '%s' (%c = %.6g nm) through the indenter's "
                  "axis: slide "
                "along it (%s) or use a full model",
-               (double)s->dir[0], (double)s->dir[1], bc->spec[k].label, n == 1 ? 'x' : 'y', (double)bc->spec[k].plane,
+               (double)s->dir[0], (double)s->dir[1], spec[k].label, n == 1 ? 'x' : 'y', (double)spec[k].plane,
                n == 1 ? "0,1 or 0,-1" : "1,0 or -1,0");
   }
   IndScratchAxis(s, 1.0, end);
-  PetscCheck(end[0] >= c->extent[0] && end[0] <= c->extent[1] && end[1] >= c->extent[2] && end[1] <= c->extent[3],
-             c->comm, PETSC_ERR_USER_INPUT,
+  PetscCheck(end[0] >= extent[0] && end[0] <= extent[1] && end[1] >= extent[2] && end[1] <= extent[3],
+             comm, PETSC_ERR_USER_INPUT,
              "-scratch_length %.6g nm takes the indenter's axis from (%.6g, %.6g) to (%.6g, %.6g) nm, off the contact "
                "surface "
              "'%s' (x from %.6g to %.6g, y from %.6g to %.6g nm)",
-             (double)s->length, (double)s->origin[0], (double)s->origin[1], (double)end[0], (double)end[1], c->surface,
-             (double)c->extent[0], (double)c->extent[1], (double)c->extent[2], (double)c->extent[3]);
+             (double)s->length, (double)s->origin[0], (double)s->origin[1], (double)end[0], (double)end[1], surface,
+             (double)extent[0], (double)extent[1], (double)extent[2], (double)extent[3]);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -1,3 +1,4 @@
+#include "solver_impl.h"
 #include "ind_solver.h"
 #include "ind_options.h"
 #include "bordered.h"
@@ -20,8 +21,7 @@ static PetscErrorCode FormResidual(SNES snes, Vec U, Vec F, void *ctx)
   if (s->contact) PetscCall(IndContactResidual(s->contact, s->Ubc, F));
   if (s->border) PetscCall(IndBorderedResidual(s->border));
   PetscCall(IndBCApplyResidual(s->bc, s->load_factor, U, F));
-  counts[0] = s->assembly->nfailed;
-  counts[1] = s->assembly->nplastic;
+  IndAssemblyGetPointCounts(s->assembly, &counts[0], &counts[1]);
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, counts, 2, MPIU_INT, MPI_SUM, PetscObjectComm((PetscObject)s->dm)));
   s->nfailed  = counts[0];
   s->nplastic = counts[1];
@@ -39,10 +39,10 @@ static PetscErrorCode RefreshMultipliers(IndSolver s, Vec U)
   Vec       F;
 
   PetscFunctionBeginUser;
-  if (!s->contact || s->contact->variant != IND_UZAWA_NEWTON) PetscFunctionReturn(PETSC_SUCCESS);
+  if (!s->contact || !IndContactReactionsFromResidual(s->contact)) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(VecCopy(U, s->Ubc));
   PetscCall(IndBCApplySolution(s->bc, s->load_factor, s->Ubc));
-  PetscCall(IndContactNewtonCurrent(s->contact, s->Ubc, &current));
+  PetscCall(IndContactMultipliersCurrent(s->contact, s->Ubc, &current));
   if (current) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(DMGetGlobalVector(s->dm, &F));
   PetscCall(FormResidual(NULL, U, F, s));
@@ -168,7 +168,7 @@ PetscErrorCode IndSolverCreate(DM dm, IndAssembly assembly, IndBC bc, IndContact
        12.4 s setup at 64k cells in PETSc 3.18. */
     Vec      nodes, blocked;
     PetscInt n;
-    PetscCall(IndDiscNodeCoordinates(assembly->disc, &nodes));
+    PetscCall(IndDiscNodeCoordinates(IndAssemblyGetDisc(assembly), &nodes));
     PetscCall(VecGetLocalSize(nodes, &n));
     PetscCall(VecCreateMPI(PetscObjectComm((PetscObject)dm), n, PETSC_DETERMINE, &blocked));
     PetscCall(VecSetBlockSize(blocked, 3));
@@ -186,7 +186,7 @@ PetscErrorCode IndSolverCreate(DM dm, IndAssembly assembly, IndBC bc, IndContact
   PetscCall(SNESSetJacobian(s->snes, s->J, s->J, FormJacobian, s));
   PetscCall(SNESGetKSP(s->snes, &ksp));
   /* The contact rows of the semi-smooth Newton Jacobian make it unsymmetric. */
-  PetscCall(KSPSetType(ksp, contact && contact->variant == IND_UZAWA_NEWTON ? KSPGMRES : KSPCG));
+  PetscCall(KSPSetType(ksp, contact && !IndContactJacobianIsSymmetric(contact) ? KSPGMRES : KSPCG));
   /* A restart every 30 iterations (PETSc's) cost the paper case at h_tip 6 (58k dofs, 25 iterations
      per solve on average, more at the top of the unloading) 8% of its Krylov iterations. */
   PetscCall(KSPGMRESSetRestart(ksp, 100));
@@ -242,7 +242,7 @@ PetscErrorCode IndSolverCreate(DM dm, IndAssembly assembly, IndBC bc, IndContact
 PetscErrorCode IndSolverSolve(IndSolver s, PetscReal load_factor, Vec U, IndSolveResult *r)
 {
   IndContact c           = s->contact;
-  PetscReal  last_change = PETSC_MAX_REAL, atol = 0, rtol = 0, stol = 0, step_atol = 0;
+  PetscReal  atol = 0, rtol = 0, stol = 0, step_atol = 0;
   PetscInt   maxit = 0, maxf = 0;
   PetscInt   border_linear = s->border ? IndBorderedLinearIterations(s->border) : 0;
   Vec        F     = NULL;
@@ -267,8 +267,9 @@ PetscErrorCode IndSolverSolve(IndSolver s, PetscReal load_factor, Vec U, IndSolv
     step_atol = PetscMax(atol, 1e-3 * rtol * fnorm);
     PetscCall(SNESSetTolerances(s->snes, step_atol, rtol, stol, maxit, maxf));
   }
-  for (PetscInt k = 1; k <= (c ? c->max_outer : 1); ++k) {
-    PetscInt its, lits;
+  for (PetscInt k = 1; k <= (c ? IndContactOuterMax(c) : 1); ++k) {
+    PetscInt  its, lits;
+    PetscBool converged, stuck;
     PetscCall(SNESSolve(s->snes, NULL, U));
     PetscCall(SNESGetConvergedReason(s->snes, &r->reason));
     PetscCall(SNESGetIterationNumber(s->snes, &its));
@@ -292,47 +293,20 @@ PetscErrorCode IndSolverSolve(IndSolver s, PetscReal load_factor, Vec U, IndSolv
     }
     PetscCall(RefreshMultipliers(s, U));
     PetscCall(IndContactUpdate(c, U, &r->contact));
-    if (c->monitor)
-      PetscCall(PetscPrintf(c->comm,
-        "    outer %2" PetscInt_FMT ": newton %2" PetscInt_FMT "  contact %5" PetscInt_FMT " (stick %5" PetscInt_FMT
-          ", slip %5" PetscInt_FMT
-          ")  load %.6e uN  penetration %.3e nm  reaction change %.3e  rho scale %g\n", k, its, r->contact.contact,
-          r->contact.stick, r->contact.slip,
-                            (double)(r->contact.load * 1e-3), (double)r->contact.penetration,
-                              (double)r->contact.change, (double)c->rho_scale));
-    /* The Newton variant's change is its complementarity residual, part of the residual Newton has
-       just driven below its tolerance; relative to a vanishing reaction (the last node leaving the
-       contact) it could never be small, so Newton's absolute tolerance also accepts it. */
-    if ((r->contact.change <= c->rtol || (c->variant == IND_UZAWA_NEWTON && r->contact.mismatch <= step_atol))
-      && r->contact.penetration <= c->pen_atol && (!s->border || IndBorderedLoadMet(s->border))) {
+    PetscCall(IndContactOuterConverged(c, k, its, step_atol, &r->contact, &converged));
+    if (converged && (!s->border || IndBorderedLoadMet(s->border))) {
       r->converged = PETSC_TRUE;
       break;
     }
-    if (c->variant == IND_UZAWA_NEWTON && its == 0) {
-      /* Newton met its tolerances without a step: another outer iteration would change nothing. */
-      PetscCall(PetscSNPrintf(r->why, sizeof(r->why),
-        "contact: reaction change %.2e (-contact_uzawa_rtol %.1e), penetration %.2e nm (limit %.2e) at Newton's "
-        "tolerances: tighten -snes_rtol or -snes_atol", (double)r->contact.change, (double)c->rtol,
-        (double)r->contact.penetration, (double)c->pen_atol));
-      break;
-    }
-    /* A growing change means rho is past the fixed point's stability limit: halve it, for good. */
-    if (c->variant == IND_UZAWA_FIXED_POINT && r->contact.change > last_change) {
-      c->rho_scale *= 0.5;
-      if (c->monitor) PetscCall(PetscPrintf(c->comm, "    outer: reaction change grew, rho halved (scale now %g)\n",
-        (double)c->rho_scale));
-    }
-    last_change = r->contact.change;
+    PetscCall(IndContactOuterNext(c, its, &r->contact, &stuck, r->why, sizeof(r->why)));
+    if (stuck) break;
   }
   if (s->border) r->linear += IndBorderedLinearIterations(s->border) - border_linear;
   if (c) {
     PetscCall(SNESSetTolerances(s->snes, atol, rtol, stol, maxit, maxf));
     PetscCall(DMRestoreGlobalVector(s->dm, &F));
     if (!r->converged && r->reason > 0 && !r->why[0])
-      PetscCall(PetscSNPrintf(r->why, sizeof(r->why),
-        "contact loop: %" PetscInt_FMT " outer iterations, reaction change %.2e (-contact_uzawa_rtol %.1e), "
-        "penetration %.2e nm (limit %.2e)", c->max_outer, (double)r->contact.change, (double)c->rtol,
-        (double)r->contact.penetration, (double)c->pen_atol));
+      PetscCall(IndContactOuterFailure(c, &r->contact, r->why, sizeof(r->why)));
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -436,7 +410,7 @@ PetscErrorCode IndSolverCommit(IndSolver s, Vec U)
   PetscCall(IndBCApplySolution(s->bc, s->load_factor, s->Ubc));
   PetscCall(DMGlobalToLocal(s->dm, s->Ubc, INSERT_VALUES, s->Uloc));
   PetscCall(IndAssemblyCommit(s->assembly, s->Uloc));
-  n = s->assembly->nplastic;
+  IndAssemblyGetPointCounts(s->assembly, NULL, &n);
   PetscCallMPI(MPI_Allreduce(&n, &s->nplastic, 1, MPIU_INT, MPI_SUM, PetscObjectComm((PetscObject)s->dm)));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -452,5 +426,35 @@ PetscErrorCode IndSolverDestroy(IndSolver *s)
   PetscCall(VecDestroy(&(*s)->Floc));
   PetscCall(VecDestroy(&(*s)->Ubc));
   PetscCall(PetscFree(*s));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode IndSolverElasticStiffness(IndSolver s, Vec U, Mat *K)
+{
+  MatNullSpace nsp;
+
+  PetscFunctionBeginUser;
+  PetscCall(MatDuplicate(s->J, MAT_DO_NOT_COPY_VALUES, K));
+  PetscCall(MatGetNearNullSpace(s->J, &nsp));
+  if (nsp) PetscCall(MatSetNearNullSpace(*K, nsp));
+  PetscCall(DMGlobalToLocal(s->dm, U, INSERT_VALUES, s->Uloc));
+  PetscCall(IndAssemblyElasticJacobian(s->assembly, s->Uloc, *K));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+IND_GETTER(PetscInt, IndSolverPlasticPoints, IndSolver, o->nplastic)
+IND_GETTER(PetscInt, IndSolverFailedPoints, IndSolver, o->nfailed)
+IND_GETTER(SNES, IndSolverGetSNES, IndSolver, o->snes)
+IND_GETTER(Mat, IndSolverGetJacobian, IndSolver, o->J)
+
+PetscErrorCode IndSolverState(void *obj, IndStateFile f)
+{
+  IndSolver s = (IndSolver)obj;
+  KSP       ksp;
+
+  PetscFunctionBeginUser;
+  if (!IndStateReading(f)) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(SNESGetKSP(s->snes, &ksp));
+  PetscCall(KSPReset(ksp));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -4,7 +4,7 @@
    dofs, like the mesh; its reaction (a nodal force on the body, nN, global axes) lives here in a
    committed copy (end of the last accepted step) and a current one (the outer Uzawa iterate).
 
-   Two couplings with the Newton solve, by -contact_uzawa:
+   Two couplings with the Newton solve, by -contact_uzawa (registered by name, IndContactCouplingRegistry):
    - newton (default, contact_newton.c): semi-smooth Newton; the reaction of a node is the residual
      of its rows without contact, and those rows hold the bi-potential projection's fixed point
      instead, with its generalized derivative in the Jacobian; the outer update only checks it;
@@ -16,9 +16,9 @@
 #include "ind_bc.h"
 #include "ind_indenter.h"
 #include "ind_bipotential.h"
+#include "ind_state.h"
+#include "ind_registry.h"
 
-typedef enum { IND_UZAWA_FIXED_POINT, IND_UZAWA_NEWTON } IndUzawa;
-extern const char *const IndUzawaTypes[];
 
 /* The state of the contact after an outer iteration, summed over all ranks. */
 typedef struct {
@@ -35,47 +35,6 @@ typedef struct {
 } IndContactSummary;
 
 typedef struct _p_IndContact *IndContact;
-struct _p_IndContact {
-  MPI_Comm    comm;
-  IndIndenter indenter;
-  IndUzawa    variant;
-  PetscReal   mu;        /* Coulomb friction coefficient */
-  PetscBool   gap_current; /* gap at X + u (default), or at the undeformed horizontal position */
-  PetscReal   rho_scale; /* rho = rho_scale * mean stiffness diagonal of the node */
-  PetscReal   rounding;  /* -indenter_sharp_rounding, nm (-1: 1e-4 of the largest depth) */
-  PetscReal   rtol;      /* outer loop: relative change of the reactions */
-  PetscReal   pen_rtol;  /* outer loop: largest penetration, relative to the largest depth */
-  PetscReal   pen_atol;  /* the same in nm, computed at setup */
-  PetscInt    max_outer;
-  PetscBool   monitor;
-  PetscReal   symmetry; /* load multiplier of a half (2) or quarter (4) model */
-  PetscInt    n;        /* owned contact nodes */
-  PetscInt   *row;      /* index of each node's x dof in the owned part of a global vector */
-  PetscInt   *grow;     /* its global row */
-  PetscReal  *X;        /* 3n reference positions */
-  PetscReal  *kdiag;    /* n mean stiffness diagonals: rho_i = rho_scale * kdiag_i */
-  PetscReal  *R, *Rc;   /* 3n current and committed reactions */
-  PetscReal  *L;        /* newton: 3n multipliers (residual without contact) of the last residual */
-  PetscReal  *Lu;       /* newton: 3n node displacements of that residual */
-  PetscInt   *fixed;    /* n masks: bit d set when component d of the node is held by a boundary condition */
-  PetscReal  *Uc;       /* 3n displacement at the committed state */
-  PetscReal  *A;        /* n horizontal tributary areas (projected on z), reference or current */
-  PetscInt   *status;   /* n, IndContactStatus of the last update */
-  PetscReal  *Rn;       /* n normal reactions of the last update */
-  PetscReal   depth_c;  /* indenter depth at the committed state */
-  PetscReal   axis_c[2]; /* indenter axis (x, y) at the committed state: a scratch moves it */
-  PetscInt    mirror;    /* bit c set: a symmetry plane normal to axis c passes through the indenter's axis */
-  PetscReal   extent[4]; /* the contact surface's nodes span x in [extent[0], extent[1]], y in [2], [3], nm */
-  PetscBool   areas_current; /* A from the deformed surface at each update (finite strain) */
-  PetscBool  *edge;          /* n: the node lies on the edge of the modelled surface (not on a symmetry plane) */
-  PetscInt    nedge;         /* such nodes, all ranks */
-  PetscReal   top;           /* z of the surface's highest node, nm */
-  PetscReal   zmin;          /* z of the mesh's lowest point, nm */
-  PetscReal   surface_area;  /* projected area of the contact surface times the symmetry factor, nm^2 */
-  IndMesh     mesh;          /* borrowed, for the surface's faces */
-  IndDisc     disc;          /* borrowed */
-  char        surface[IND_NAME_LEN];
-};
 
 /* Reads -indenter_* and -contact_* options; *contact is NULL when no -indenter_type is given. */
 PetscErrorCode IndContactCreate(IndMesh mesh, IndDisc disc, IndBC bc, IndContact *contact);
@@ -96,9 +55,6 @@ PetscErrorCode IndContactResidual(IndContact contact, Vec U, Vec F);
    a node's force depends on u_z + depth alone (the gap and the slip see the indenter's motion as the
    node's), so it is the z column of the node's stiffness. */
 PetscErrorCode IndContactJacobian(IndContact contact, Vec U, Mat J, Vec Fd);
-/* The semi-smooth Newton strategy (contact_newton.c). */
-PetscErrorCode IndContactNewtonResidual(IndContact contact, Vec U, Vec F);
-PetscErrorCode IndContactNewtonJacobian(IndContact contact, Vec U, Mat J, Vec Fd);
 /* Load control with the Newton variant. The load the body carries at the last residual's displacement,
    nN of the modelled part (not times the symmetry factor): minus the z rows of the residual without
    contact summed over the contact nodes whose z is free, which at convergence is the indenter's load. */
@@ -110,8 +66,9 @@ PetscErrorCode IndContactLoadRows(IndContact contact, Vec e);
 PetscErrorCode IndContactSmallestGap(IndContact contact, Vec U, PetscReal *gap);
 PetscReal      IndContactGetDepth(IndContact contact);
 PetscErrorCode IndContactSetDepth(IndContact contact, PetscReal depth);
-/* Whether the multipliers are those of a residual at U (on every rank). */
-PetscErrorCode IndContactNewtonCurrent(IndContact contact, Vec U, PetscBool *current);
+/* Whether the reactions the next outer update starts from are those of U: with reactions from the residual,
+   whether the last residual was at U (on every rank); frozen reactions always are. */
+PetscErrorCode IndContactMultipliersCurrent(IndContact contact, Vec U, PetscBool *current);
 /* Its rows for one node, pure: K the node's 3 rows of the tangent (3 x ncols, row-major), diag the
    positions of the node's own 3 dofs among the columns, P = Q D Q^T and B = rho Q D G (3x3,
    global axes), mask the components held by boundary conditions. out = (I - P) M K + B at diag. */
@@ -130,4 +87,69 @@ PetscErrorCode IndContactSetIndenterPosition(IndContact contact, PetscReal depth
 /* Whether the symmetry plane of spec passes through the indenter's axis: 0 no, 1 normal x, 2 normal y. */
 int            IndContactPlaneThroughAxis(const IndBCSpec *spec, const IndIndenter *ind);
 PetscErrorCode IndContactCommit(IndContact contact, Vec U);
+/* An elastic unloading by 1 nm from the last update's state: the global rows the indenter holds (a sticking node
+   moves with it, a slipping one only follows it vertically; not the components of boundary conditions), appended
+   to rows[*n...] (room for 3 per owned contact node: IndContactGetSize), and X set to the indenter's motion
+   there (1 in z). */
+PetscErrorCode IndContactUnloadingRows(IndContact contact, Vec X, PetscInt *n, PetscInt rows[]);
+/* The z force of F (global) on the nodes in contact at the last update, all ranks, times the symmetry factor. */
+PetscErrorCode IndContactActiveForce(IndContact contact, Vec F, PetscReal *Fz);
+MPI_Comm       IndContactGetComm(IndContact contact);
+/* The contact surface's name and the box its nodes span: x in [extent[0], extent[1]], y in [2], [3], nm. */
+PetscErrorCode IndContactGetSurface(IndContact contact, const char **name, PetscReal extent[4]);
+/* The owned contact nodes as the last update left them, read-only (borrowed): for diagnostics and tests. */
+typedef struct {
+  PetscInt         n;
+  const PetscReal *X;      /* 3n reference positions */
+  const PetscReal *R;      /* 3n current reactions (force on the body, nN, global axes) */
+  const PetscReal *A;      /* n tributary areas projected on z, nm^2 */
+  const PetscInt  *status; /* n IndContactStatus */
+} IndContactNodes;
+PetscErrorCode IndContactGetNodes(IndContact contact, IndContactNodes *nodes);
+/* Projected area of the contact surface times the symmetry factor, nm^2. */
+PetscReal      IndContactGetSurfaceArea(IndContact contact);
+/* Owned contact nodes. */
+PetscInt       IndContactGetSize(IndContact contact);
+/* Load multiplier of a half (2) or quarter (4) model. */
+PetscReal      IndContactGetSymmetry(IndContact contact);
+/* The indenter as the contact sees it (borrowed). */
+const IndIndenter *IndContactGetIndenter(IndContact contact);
+/* The indenter's depth at the committed state, nm. */
+PetscReal      IndContactGetCommittedDepth(IndContact contact);
+
+/* The couplings by name (contact_coupling.c): each entry's function, PetscErrorCode create(IndContact), fills the
+   contact's table of operations and its defaults. */
+extern IndRegistry IndContactCouplingRegistry;
+PetscErrorCode IndContactSetCoupling(IndContact contact, const char name[]);
+PetscErrorCode IndContactGetCoupling(IndContact contact, const char **name);
+/* Whether the contact leaves the Jacobian as assembled (symmetric: CG), and whether its reactions come from the
+   residual (load control needs that). */
+PetscBool      IndContactJacobianIsSymmetric(IndContact contact);
+PetscBool      IndContactReactionsFromResidual(IndContact contact);
+/* The outer loop of a step (solver.c): at most IndContactOuterMax updates; after update k, at Newton's
+   solution after its Newton iterations, whether the contact has converged (atol: Newton's absolute tolerance
+   of the step; prints the -contact_monitor line); if not, the coupling's next move, which may find the step
+   stuck, with why. */
+PetscInt       IndContactOuterMax(IndContact contact);
+PetscErrorCode IndContactOuterConverged(IndContact contact, PetscInt k, PetscInt its, PetscReal atol,
+                                        const IndContactSummary *sum, PetscBool *converged);
+PetscErrorCode IndContactOuterNext(IndContact contact, PetscInt its, const IndContactSummary *sum, PetscBool *stuck,
+                                   char why[], size_t len);
+/* Why a step ran out of outer iterations. */
+PetscErrorCode IndContactOuterFailure(IndContact contact, const IndContactSummary *sum, char why[], size_t len);
 PetscErrorCode IndContactRollback(IndContact contact);
+/* Verdicts on a run (contact_checks.c). An error (PETSC_ERR_USER_INPUT) when no node (touching, all ranks)
+   is in contact at the end of loading, at depth_max: the indenter never touched the surface. */
+PetscErrorCode IndContactCheckTouched(IndContact contact, PetscReal depth_max, PetscInt touching);
+/* warning[0] = 0, or the text: nodes on the edge of the modelled surface touch the indenter. */
+PetscErrorCode IndContactCheckEdge(IndContact contact, PetscReal depth, char warning[], size_t len);
+/* warning[0] = 0, or the text: A(h_c) of the Oliver-Pharr analysis exceeds the surface's projected area. */
+PetscErrorCode IndContactCheckArea(IndContact contact, PetscReal area_hc, char warning[], size_t len);
+/* Whether the contact at the largest load, nodes of the modelled part in contact, resolves the contact area
+   for Oliver-Pharr: at least min_nodes over the whole indent (the modelled part times the model's symmetry),
+   about sqrt(min_nodes / pi) node spacings across its radius; why says otherwise. */
+void           IndContactCheckResolved(IndContact contact, PetscInt nodes, PetscInt min_nodes, char why[],
+                                       size_t len);
+/* Its part of the state (ind_state.h, contact_state.c): the committed reactions and node displacements, the
+   penalty scale and the indenter's committed position. */
+PetscErrorCode IndContactState(void *contact, IndStateFile file);

@@ -6,7 +6,10 @@
    h_c = h - epsilon P / S, A(h_c),
    H = P / A(h_c) and E_r = sqrt(pi) / (2 beta) S / sqrt(A(h_c)) with the -op_* parameters. One linear
    solve per point, on a copy of the Jacobian: the load program's solver state is not touched. */
-#include "ind_app.h"
+#include "ind_solver.h"
+#include "ind_contact.h"
+#include "ind_bc.h"
+#include "ind_oliverpharr.h"
 
 #define IND_CSM_FILE "csm.csv" /* in the output directory; a restart truncates it (stepcsv.c) */
 
@@ -17,9 +20,11 @@ typedef struct {
   PetscReal a;       /* contact radius sqrt(true area / pi), nm */
 } IndCSMPoint;
 
-/* Collective: S and the quantities above at the accepted state of app (depth h, load P in uN, true
-   projected contact area area_true in nm^2, times the symmetry factor as the curve has them). */
-PetscErrorCode IndCSMStiffness(IndApp app, PetscReal h, PetscReal P, PetscReal area_true, IndCSMPoint *point);
+/* Collective: S and the quantities above at the accepted state U (depth h, load P in uN, true projected contact
+   area area_true in nm^2, times the symmetry factor as the curve has them), with the contact's state of its last
+   update and the Oliver-Pharr constants op. */
+PetscErrorCode IndCSMStiffness(IndSolver solver, IndBC bc, IndContact contact, const IndOPParams *op, Vec U,
+                               PetscReal h, PetscReal P, PetscReal area_true, IndCSMPoint *point);
 /* Rank 0 appends the point of accepted step `step` to <dir>/csm.csv (the header first when the file is
    new). */
 PetscErrorCode IndCSMWrite(MPI_Comm comm, const char dir[], PetscInt step, PetscReal h, PetscReal P,

@@ -8,21 +8,20 @@
 #include "ind_output.h"
 #include "ind_contact.h"
 #include "ind_warnings.h"
+#include "ind_state.h"
 
 typedef struct _p_IndSummary *IndSummary;
-struct _p_IndSummary {
-  MPI_Comm       comm;
-  IndOPParams    op;
-  IndCurvePoint *pts; /* accepted steps */
-  PetscInt       n, cap;
-  PetscInt       min_contact_nodes; /* nodes in contact at P_max, whole indent, for an Oliver-Pharr analysis */
-};
 
 /* Reads the -op_* options of the analysis (shared with indent-op), checking each. */
 PetscErrorCode IndOPParamsSetFromOptions(MPI_Comm comm, IndOPParams *params);
 PetscErrorCode IndSummaryCreate(MPI_Comm comm, IndSummary *summary);
 PetscErrorCode IndSummaryDestroy(IndSummary *summary);
 PetscErrorCode IndSummaryAddPoint(IndSummary summary, const IndCurvePoint *point);
+/* The points so far (borrowed), and the Oliver-Pharr constants of -op_*. */
+PetscErrorCode IndSummaryGetPoints(IndSummary summary, PetscInt *n, const IndCurvePoint **points);
+const IndOPParams *IndSummaryGetOPParams(IndSummary summary);
+/* Its part of the state (ind_state.h): the curve so far. */
+PetscErrorCode IndSummaryState(void *summary, IndStateFile file);
 /* Where and how the run was made, for the summary's provenance. */
 typedef struct {
   const char    *start_time; /* UTC, ISO 8601, of the run's first part */

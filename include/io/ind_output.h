@@ -10,6 +10,7 @@
 #include "ind_disc.h"
 #include "ind_assembly.h"
 #include "ind_contact.h"
+#include "ind_state.h"
 
 #define IND_MAX_OUTPUT_STEPS 100000
 /* Values recorded per output step for the XDMF index: accepted step, load factor, depth (nm), load (uN). */
@@ -26,30 +27,6 @@ typedef struct {
 } IndCurvePoint;
 
 typedef struct _p_IndOutput *IndOutput;
-struct _p_IndOutput {
-  IndMesh     mesh;
-  IndDisc     disc;
-  PetscBool   enabled;
-  PetscBool   curve;   /* -output_curve */
-  PetscReal   size_warning; /* -output_size_warning, GB: field output expected beyond it is announced */
-  FILE       *csv;     /* rank 0, opened at the first point */
-  char        dir[PETSC_MAX_PATH_LEN];
-  char        h5name[PETSC_MAX_PATH_LEN];
-  PetscViewer viewer;
-  DM          vdm, c6dm, c1dm; /* vertex (3 dof), cell (6 dof) and cell (1 dof) layouts */
-  Vec           Uloc, vloc, disp, stress, strain, vonmises, plastic, back, yielding;
-  IndCellFields cells; /* per local cell, filled by the assembly */
-  IndContact    contact;                      /* NULL without an indenter */
-  Vec           Gc, Cloc, c3, pressure, status; /* contact fields: disc layout (global, local),
-    vertex 3-dof and 1-dof */
-  PetscInt    nsteps;
-  PetscReal  *times;    /* per output step: XDMF time value, the pseudo-time t given to IndOutputSetStepInfo */
-  PetscReal  *info;     /* per output step: IND_OUTPUT_INFO values, NaN where not known */
-  PetscBool   info_set; /* IndOutputSetStepInfo was called for the coming step */
-  PetscBool   resume;               /* continue indent.h5 (a restarted run) rather than create it */
-  struct _n_IndOutputPerm *perm;   /* resumed: where this run's vertices and cells sit in the file */
-  PetscInt    nvert, ncell, corners; /* global counts */
-};
 
 PetscErrorCode IndOutputCreate(IndMesh mesh, IndDisc disc, IndOutput *out);
 /* Adds the vertex fields contact_pressure (GPa) and contact_status (0 open, 1 stick, 2 slip). */
@@ -64,6 +41,13 @@ PetscErrorCode IndOutputCheckSize(IndOutput out, PetscInt steps_left, IndWarning
 /* A restarted run continues the earlier part's files: the curve is rewritten with the checkpoint's npts
    points (the lines of steps after the checkpoint go), and indent.h5 is extended from the checkpoint's
    output step, in the file's vertex and cell order whatever the rank count (output_resume.c). */
+/* The output directory, the field file (indent.h5 in it), and whether fields and the curve are written. */
+const char    *IndOutputGetDir(IndOutput out);
+const char    *IndOutputGetFieldFile(IndOutput out);
+PetscBool      IndOutputFieldsEnabled(IndOutput out);
+PetscBool      IndOutputCurveEnabled(IndOutput out);
+/* Its part of the state (ind_state.h): the output steps written so far, their times and values. */
+PetscErrorCode IndOutputState(void *output, IndStateFile file);
 PetscErrorCode IndOutputResume(IndOutput out, PetscInt npts, const IndCurvePoint *pts);
 /* Appends a line to the curve (rank 0 writes; flushed at once, so a killed run keeps its curve). */
 PetscErrorCode IndOutputCurvePoint(IndOutput out, const IndCurvePoint *point);

@@ -7,6 +7,7 @@
    restored and compared as an ordinary vector on any number of ranks. */
 #include <petscdm.h>
 #include "ind_disc.h"
+#include "ind_state.h"
 #include "ind_plasticity.h"
 
 /* Values per quadrature point: IndPlasticState (eps_p 6, x 6, p 1), then dp of the step. */
@@ -14,12 +15,11 @@
 #define IND_HISTORY_DP   13
 
 typedef struct _p_IndHistory *IndHistory;
-struct _p_IndHistory {
-  DM       dm;     /* clone of the mesh carrying the cell section */
-  PetscInt nq;     /* quadrature points per cell */
-  PetscInt stride; /* values per cell: nq * IND_HISTORY_NVAL; local cell i starts at i * stride */
-  Vec      committed;
-};
 
 PetscErrorCode IndHistoryCreate(IndDisc disc, IndHistory *history);
 PetscErrorCode IndHistoryDestroy(IndHistory *history);
+/* The committed history (borrowed): stride values per local cell, cell i at i * stride of the owned part. */
+PetscErrorCode IndHistoryGetCommitted(IndHistory history, Vec *committed, PetscInt *stride);
+
+/* Its part of the state (ind_state.h): the committed history, by cell. */
+PetscErrorCode IndHistoryState(void *history, IndStateFile file);

@@ -6,6 +6,7 @@
 #include "ind_assembly.h"
 #include "ind_bc.h"
 #include "ind_contact.h"
+#include "ind_state.h"
 
 /* What one load step's solve did. */
 typedef struct {
@@ -20,28 +21,26 @@ typedef struct {
 typedef struct _p_IndBordered *IndBordered;
 
 typedef struct _p_IndSolver *IndSolver;
-struct _p_IndSolver {
-  DM           dm;
-  IndAssembly  assembly;
-  IndBC        bc;
-  IndContact   contact; /* NULL without an indenter */
-  SNES         snes;
-  Mat          J;
-  Vec          Uloc, Floc, Ubc;
-  PetscReal    load_factor; /* of the step being solved */
-  PetscInt     nfailed;     /* quadrature points, all ranks, whose return map failed in the last residual */
-  PetscInt     nplastic;    /* quadrature points, all ranks, yielding in the last residual */
-  PetscInt     stall_its;   /* Newton fails after this many iterations without a new smallest residual */
-  PetscReal    fmin;        /* smallest residual norm of the current Newton solve */
-  PetscInt     itmin;       /* its iteration */
-  PetscBool    stalled;     /* the last Newton solve was stopped by the stall test */
-  IndBordered  border;      /* load control (NULL: depth control) */
-};
 
 /* depth_max sets the contact loop's penetration tolerance. */
 PetscErrorCode IndSolverCreate(DM dm, IndAssembly assembly, IndBC bc, IndContact contact, PetscReal depth_max,
   IndSolver *solver);
 PetscErrorCode IndSolverDestroy(IndSolver *solver);
+/* Quadrature points, all ranks, yielding in the last residual, and those whose return map failed there. */
+PetscInt       IndSolverPlasticPoints(IndSolver solver);
+PetscInt       IndSolverFailedPoints(IndSolver solver);
+/* The Newton solver (borrowed), for drivers and tests that inspect or tune it. */
+SNES           IndSolverGetSNES(IndSolver solver);
+/* Its part of the state (ind_state.h). The solver keeps no answer-changing state between steps but a cache: the
+   multigrid hierarchy (GAMG's aggregates and interpolation), built at the first Jacobian it meets and reused. Saving
+   writes nothing; loading drops the cache, so that a run continued from a state builds it at its next Jacobian, as
+   a restarted run does. */
+PetscErrorCode IndSolverState(void *solver, IndStateFile file);
+/* The Jacobian matrix (borrowed). */
+Mat            IndSolverGetJacobian(IndSolver solver);
+/* A new matrix of the Jacobian's layout and near-null space holding the elastic tangent at U (global), without
+   boundary conditions or contact: the stiffness of an elastic unloading. */
+PetscErrorCode IndSolverElasticStiffness(IndSolver solver, Vec U, Mat *K);
 /* Tangent predictor for a step from load factor t_old (U converged there) to t_new: adds the
    prescribed-value increment and the response of the tangent at U to it, so that an elastic step
    converges in one Newton iteration instead of starting from a strained boundary layer of cells. */

@@ -1,7 +1,7 @@
-/* Total Lagrangian finite strain at a quadrature point: the residual's integrand G_a . P with
-   P = F S, and its exact derivative B^T (dS/dE_GL) B + (G_a . S G_b) I, the second term being the
-   geometric (initial stress) stiffness. The cell loops (assembly.c), reference gradients, weights and
-   history layout are the small-strain ones; only the kinematics and the material point differ. */
+/* The "finite" kinematics (-formulation finite): total Lagrangian finite strain at a quadrature point, the
+   residual's integrand G_a . P with P = F S, and its exact derivative B^T (dS/dE_GL) B + (G_a . S G_b) I, the
+   second term being the geometric (initial stress) stiffness. The cell loops (assembly.c), reference gradients,
+   weights and history layout are the small-strain ones; only the kinematics and the material point differ. */
 #include "assembly_impl.h"
 #include "ind_logstrain.h"
 
@@ -26,7 +26,7 @@ static inline IndPlasticStatus FinitePoint(const IndMaterial *m, IndTangent tang
   return status;
 }
 
-IndPlasticStatus IndFinitePointStress(const IndMaterial *m, IndTangent tangent, PetscInt nb, const PetscReal *G,
+static IndPlasticStatus Stress(const IndMaterial *m, IndTangent tangent, PetscInt nb, const PetscReal *G,
                                       const PetscReal *ue, const PetscReal *old, PetscReal *trial, PetscReal P[9],
                                       PetscReal *dp)
 {
@@ -94,7 +94,7 @@ static inline void AddFiniteStiffness(PetscInt nb, const PetscReal *G, const Pet
   }
 }
 
-IndPlasticStatus IndFinitePointStiffness(const IndMaterial *m, IndTangent tangent, PetscInt nb, const PetscReal *G,
+static IndPlasticStatus Stiffness(const IndMaterial *m, IndTangent tangent, PetscInt nb, const PetscReal *G,
                                          const PetscReal *ue, const PetscReal *old, PetscReal w, PetscReal *B,
                                          PetscReal *DB, PetscReal *Ke)
 {
@@ -107,16 +107,15 @@ IndPlasticStatus IndFinitePointStiffness(const IndMaterial *m, IndTangent tangen
   return status;
 }
 
-void IndAssemblyFinitePointFields(IndAssembly a, PetscInt i, const PetscReal *h, PetscReal sigma[6], PetscReal e[6],
-                                  PetscReal *w)
+/* Cauchy stress and spatial Hencky strain of a committed point; w becomes the weight of the current volume. */
+static void Fields(const IndMaterial *m, PetscInt nb, const PetscReal *G, const PetscReal *ue, const PetscReal *h,
+                   PetscReal sigma[6], PetscReal e[6], PetscReal *w)
 {
-  IndDisc                disc = a->disc;
-  const IndMaterial     *m    = &a->mats->mat[a->mats->cell_material[i]];
-  const IndPlasticState *st   = (const IndPlasticState *)h;
+  const IndPlasticState *st = (const IndPlasticState *)h;
   IndLogStrain           ls;
   PetscReal              H[9], F[9], E[6], ee[6], T[6], S[6];
 
-  IndDeformationGradient(disc->nb, a->G, a->ue, H, F);
+  IndDeformationGradient(nb, G, ue, H, F);
   if (IndLogStrainFromGradient(H, &ls, E)) { /* a committed state is never inverted; report it, not hide it */
     for (int k = 0; k < 6; ++k) sigma[k] = e[k] = NAN;
     return;
@@ -128,4 +127,10 @@ void IndAssemblyFinitePointFields(IndAssembly a, PetscInt i, const PetscReal *h,
   IndLogStrainCauchy(F, ls.J, S, sigma);
   IndLogStrainSpatial(F, &ls, e);
   *w *= ls.J;
+}
+
+const IndKinematics *IndKinematicsFinite(void)
+{
+  static const IndKinematics kin = {"finite", Stress, Stiffness, Fields, PETSC_TRUE};
+  return &kin;
 }

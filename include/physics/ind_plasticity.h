@@ -17,24 +17,29 @@
   #define PETSC_SUCCESS 0 /* PETSc < 3.19 returns plain 0 */
 #endif
 
-typedef enum {
-  IND_HARDENING_VOCE,  /* R(p) = Rs - (Rs - R0) exp(-gamma p) */
-  IND_HARDENING_LINEAR /* R(p) = R0 + h p */
-} IndHardening;
-/* Names for PetscOptionsEnum(): "voce", "linear". */
-extern const char *const IndHardeningTypes[];
+/* The isotropic hardening law R(p), an implementation registered by name (ind_hardening.h). */
+typedef struct _IndHardeningLaw IndHardeningLaw;
+#define IND_HARDENING_NPARAM 4
 
 typedef struct {
-  PetscReal    kappa, mu; /* bulk and shear moduli, GPa */
-  IndHardening hardening;
-  PetscReal    R0;        /* initial yield stress, GPa: -<region>_yield */
-  PetscReal    Rs;        /* Voce saturation stress, GPa: -<region>_saturation */
-  PetscReal    gamma;     /* Voce rate: -<region>_voce_rate */
-  PetscReal    h;         /* linear hardening slope, GPa: -<region>_hardening_slope */
-  PetscReal    H;         /* Prager kinematic modulus, GPa: -<region>_kinematic */
-  PetscBool    elastic_only;   /* skip the return: linear elasticity with the same moduli */
-  PetscInt     max_iterations; /* cap on the scalar return solve; 0 means 100 */
+  PetscReal              kappa, mu; /* bulk and shear moduli, GPa */
+  const IndHardeningLaw *law;       /* R(p) and R'(p) (NULL: elastic_only) */
+  PetscReal              R0;        /* initial yield stress, GPa: -<region>_yield */
+  PetscReal              c[IND_HARDENING_NPARAM]; /* the law's own parameters, named in its file */
+  PetscReal              H;         /* Prager kinematic modulus, GPa: -<region>_kinematic */
+  PetscBool              elastic_only;   /* skip the return: linear elasticity with the same moduli */
+  PetscInt               max_iterations; /* cap on the scalar return solve; 0 means 100 */
 } IndPlasticParams;
+
+/* A hardening law: R(p) and its derivative, pure; reading its parameters from the region's options (inside the
+   region's PetscOptionsBegin block, which `po` is) and checking them, naming the offending option by prefix. */
+struct _IndHardeningLaw {
+  const char *name;
+  PetscReal (*R)(const IndPlasticParams *m, PetscReal p);
+  PetscReal (*dR)(const IndPlasticParams *m, PetscReal p);
+  PetscErrorCode (*read)(PetscOptionItems *po, MPI_Comm comm, const char region[], IndPlasticParams *m);
+  PetscErrorCode (*check)(const IndPlasticParams *m, const char prefix[], MPI_Comm comm);
+};
 
 /* History of a quadrature point at the end of a converged step; all zero for a virgin material. */
 typedef struct {

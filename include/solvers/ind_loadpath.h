@@ -9,6 +9,7 @@
    saved with the rest of the run. */
 #include <petscsys.h>
 #include "ind_common.h"
+#include "ind_state.h"
 
 typedef struct {
   PetscReal t;          /* pseudo-time of the last accepted step */
@@ -57,3 +58,5 @@ void           IndLoadPathAccept(IndLoadPath *path, PetscInt newton_its);
 /* Cuts the increment; errors (naming the options) once it falls below dt_min or after
    max_cutbacks failures in a row. */
 PetscErrorCode IndLoadPathReject(IndLoadPath *path, MPI_Comm comm, const char why[]);
+/* Its part of the state (ind_state.h): the position in the program, the next increment and the counters. */
+PetscErrorCode IndLoadPathState(void *path, IndStateFile file);

@@ -19,13 +19,11 @@ typedef struct {
 } IndMaterial;
 
 typedef struct _p_IndMaterials *IndMaterials;
-struct _p_IndMaterials {
-  PetscInt    n;
-  IndMaterial mat[IND_MAX_REGIONS];
-  PetscInt   *cell_material; /* per local cell of the discretisation: index into mat */
-};
 
 /* Whether any region is elasto-plastic (collective-free: every rank reads the same options). */
 PetscBool      IndMaterialsArePlastic(IndMaterials mats);
 PetscErrorCode IndMaterialsCreate(IndMesh mesh, IndDisc disc, IndMaterials *mats);
 PetscErrorCode IndMaterialsDestroy(IndMaterials *mats);
+/* The regions' materials, in the mesh's order of volume regions. */
+PetscInt       IndMaterialsGetCount(IndMaterials mats);
+const IndMaterial *IndMaterialsGet(IndMaterials mats, PetscInt k);

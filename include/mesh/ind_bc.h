@@ -20,20 +20,14 @@ typedef struct {
 } IndBCSpec;
 
 typedef struct _p_IndBC *IndBC;
-struct _p_IndBC {
-  IndMesh    mesh;
-  IndDisc    disc;
-  PetscInt   nspec;
-  IndBCSpec  spec[IND_MAX_BC];
-  PetscBool  setup;
-  PetscInt   nrows;   /* constrained rows owned by this rank */
-  PetscInt  *rows;    /* global row numbers */
-  PetscInt  *lrows;   /* the same rows, local to the owned part of a global vector */
-  PetscReal *values;  /* value of each row at full load */
-};
 
 PetscErrorCode IndBCCreate(IndMesh mesh, IndDisc disc, IndBC *bc);
 PetscErrorCode IndBCDestroy(IndBC *bc);
+/* The conditions as given, in the order of their options (borrowed). */
+PetscErrorCode IndBCGetSpecs(IndBC bc, PetscInt *n, const IndBCSpec **specs);
+/* The constrained rows owned by this rank, global numbers, after IndBCSetUp (borrowed). local: the same rows
+   in the owned part of a global vector (NULL if not wanted). */
+PetscErrorCode IndBCGetRows(IndBC bc, PetscInt *n, const PetscInt **rows, const PetscInt **local);
 PetscErrorCode IndBCAddFunction(IndBC bc, const char label[], PetscInt mask, IndVectorFn fn, void *ctx);
 PetscErrorCode IndBCSetUp(IndBC bc);
 /* Makes the next IndBCSetUp re-evaluate every condition, e.g. after the state behind a function's

@@ -6,28 +6,34 @@
 #include "ind_mat3.h"
 
 typedef struct _p_IndDisc *IndDisc;
-struct _p_IndDisc {
-  DM               dm; /* borrowed from the mesh; carries the field and its section */
-  PetscFE          fe;
+
+/* The discrete space as the cell loops read it: tabulations and per-cell indices, owned by the IndDisc and
+   read-only to everyone else (IndDiscGetLayout), so a loop touches plain arrays and calls no function per point. */
+typedef struct {
   PetscInt         degree;
   PetscBool        simplex;
   PetscInt         nq;    /* quadrature points per cell */
   PetscInt         nb;    /* scalar basis functions (nodes) per cell */
   PetscInt         ndof;  /* 3 * nb */
-  const PetscReal *w;     /* reference quadrature weights (owned by the quadrature) */
-  PetscReal       *N;     /* nq x nb reference shape function values */
-  PetscReal       *dN;    /* nq x nb x 3 reference gradients */
+  const PetscReal *w;     /* reference quadrature weights */
+  const PetscReal *N;     /* nq x nb reference shape function values */
+  const PetscReal *dN;    /* nq x nb x 3 reference gradients */
   PetscInt         ncell; /* local cells, numbered cStart + i */
   PetscInt         cStart;
-  PetscInt        *lidx;  /* ncell x ndof local-vector indices, closure order */
-  PetscInt        *gidx;  /* ncell x ndof global indices (the same dofs) */
-  PetscReal       *wdetJ; /* ncell x nq: weight times det J, and */
-  PetscReal       *invJ;  /* ncell x nq x 9: invJ[k*3+j] = d xi_k / d x_j, kept only for cells whose coordinate map
+  const PetscInt  *lidx;  /* ncell x ndof local-vector indices, closure order */
+  const PetscInt  *gidx;  /* ncell x ndof global indices (the same dofs) */
+  const PetscReal *wdetJ; /* ncell x nq: weight times det J, and */
+  const PetscReal *invJ;  /* ncell x nq x 9: invJ[k*3+j] = d xi_k / d x_j, kept only for cells whose coordinate map
                              the displacement basis cannot hold (second-order cells under P1/Q1); NULL otherwise */
-  Vec              Xloc;  /* position of every displacement node, local vector of the displacement's layout */
-};
+} IndDiscLayout;
 
 PetscErrorCode IndDiscCreate(IndMesh mesh, IndDisc *disc);
+/* The layout above (valid until IndDiscDestroy). */
+PetscErrorCode IndDiscGetLayout(IndDisc disc, const IndDiscLayout **layout);
+/* The mesh's DM, which carries the displacement field and its section (borrowed). */
+PetscErrorCode IndDiscGetDM(IndDisc disc, DM *dm);
+/* The position of every displacement node, a local vector of the displacement's layout (borrowed). */
+PetscErrorCode IndDiscGetNodePositions(IndDisc disc, Vec *Xloc);
 PetscErrorCode IndDiscDestroy(IndDisc *disc);
 /* Positions of the quadrature points, ncell x nq x 3 (PetscFree them): for body forces. */
 PetscErrorCode IndDiscQuadraturePoints(IndDisc disc, PetscReal **xq);
@@ -35,7 +41,7 @@ PetscErrorCode IndDiscQuadraturePoints(IndDisc disc, PetscReal **xq);
 PetscErrorCode IndDiscNodeCoordinates(IndDisc disc, Vec *coords);
 
 /* The positions (nb x 3) of the nodes of local cell i, from xn, the array of Xloc. */
-static inline void IndDiscCellNodes(IndDisc disc, PetscInt i, const PetscScalar *xn, PetscReal *xc)
+static inline void IndDiscCellNodes(const IndDiscLayout *disc, PetscInt i, const PetscScalar *xn, PetscReal *xc)
 {
   const PetscInt *idx = disc->lidx + i * disc->ndof;
   for (PetscInt k = 0; k < disc->ndof; ++k) xc[k] = PetscRealPart(xn[idx[k]]);
@@ -45,7 +51,8 @@ static inline void IndDiscCellNodes(IndDisc disc, PetscInt i, const PetscScalar 
    positions are xc (IndDiscCellNodes); returns the quadrature weight times det J. The Jacobian of the
    coordinate map is recomputed here rather than stored: 80 bytes a quadrature point, 640 a hexahedron,
    against some 80 flops a point. */
-static inline PetscReal IndDiscGradients(IndDisc disc, PetscInt i, const PetscReal *xc, PetscInt q, PetscReal *G)
+static inline PetscReal IndDiscGradients(const IndDiscLayout *disc, PetscInt i, const PetscReal *xc, PetscInt q,
+                                         PetscReal *G)
 {
   const PetscInt   nb = disc->nb;
   const PetscReal *dN = disc->dN + q * nb * 3, *iJ;

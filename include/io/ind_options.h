@@ -14,6 +14,7 @@
    any other text is shown as "default: <text>"), then the value given on the command line if any.
    Groups whose title starts with IND_TITLE are indent's: -help prints them first (help.c). */
 #include <petscsys.h>
+#include "ind_registry.h"
 
 #define IND_TITLE     "indent: "
 #define IND_HELP_MARK "\037"
@@ -29,6 +30,8 @@ PetscErrorCode IndOptionsEnum_Private(PetscOptionItems *, const char opt[], cons
   PetscEnum cur, PetscEnum *value, PetscBool *set);
 PetscErrorCode IndOptionsEList_Private(PetscOptionItems *, const char opt[], const char text[],
   const char *const *list, PetscInt n, PetscInt cur, PetscInt *value, PetscBool *set);
+PetscErrorCode IndOptionsType_Private(PetscOptionItems *, const char opt[], const char text[],
+  IndRegistry *registry, const char cur[], char value[], size_t len, PetscBool *set);
 PetscErrorCode IndOptionsString_Private(PetscOptionItems *, const char opt[], const char text[], const char what[],
   const char dflt[], const char cur[], char value[], size_t len, PetscBool *set);
 PetscErrorCode IndOptionsStringArray_Private(PetscOptionItems *, const char opt[], const char text[],
@@ -50,6 +53,9 @@ PetscErrorCode IndOptionsIntArray_Private(PetscOptionItems *, const char opt[], 
   IndOptionsEnum_Private(PetscOptionsObject, opt, text, list, cur, value, set)
 #define IndOptionsEList(opt, text, list, n, cur, value, set) \
   IndOptionsEList_Private(PetscOptionsObject, opt, text, list, n, cur, value, set)
+/* A name of the registry (an implementation chosen by its option, as -ksp_type): one of its names. */
+#define IndOptionsType(opt, text, registry, cur, value, len, set) \
+  IndOptionsType_Private(PetscOptionsObject, opt, text, registry, cur, value, len, set)
 #define IndOptionsString(opt, text, what, dflt, cur, value, len, set) \
   IndOptionsString_Private(PetscOptionsObject, opt, text, what, dflt, cur, value, len, set)
 #define IndOptionsStringArray(opt, text, what, values, n, set) \

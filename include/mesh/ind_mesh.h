@@ -11,16 +11,17 @@ typedef struct {
 } IndRegion;
 
 typedef struct _p_IndMesh *IndMesh;
-struct _p_IndMesh {
-  DM        dm;        /* owned; distributed; each region is a DMLabel of that name with value 1 */
-  PetscBool simplex;   /* tetrahedra (true) or hexahedra (false); the same on every rank */
-  PetscInt  nregions;
-  IndRegion regions[IND_MAX_REGIONS];
-  char      source[PETSC_MAX_PATH_LEN]; /* mesh file, or "box" */
-};
 
 PetscErrorCode IndMeshCreate(MPI_Comm comm, IndMesh *mesh);
 PetscErrorCode IndMeshDestroy(IndMesh *mesh);
+/* The distributed DM (borrowed); each region is a DMLabel of its name with value 1. */
+PetscErrorCode IndMeshGetDM(IndMesh mesh, DM *dm);
+/* Tetrahedra (true) or hexahedra (false), the same on every rank. */
+PetscErrorCode IndMeshIsSimplex(IndMesh mesh, PetscBool *simplex);
+/* The named regions, in the mesh file's order (borrowed). */
+PetscErrorCode IndMeshGetRegions(IndMesh mesh, PetscInt *n, const IndRegion **regions);
+/* The mesh file, or "box". */
+PetscErrorCode IndMeshGetSource(IndMesh mesh, const char **source);
 /* The label of a region; a missing region is an error naming the option that asked for it. */
 PetscErrorCode IndMeshGetRegionLabel(IndMesh mesh, const char name[], PetscInt dim, const char option[],
   DMLabel *label);

@@ -5,6 +5,7 @@
 #include <petscmat.h>
 #include "ind_disc.h"
 #include "ind_material.h"
+#include "ind_registry.h"
 #include "ind_history.h"
 #include "ind_matinsert.h"
 
@@ -16,25 +17,13 @@ extern const char *const IndTangentTypes[];
 
 /* -formulation: small strain (the paper's model), or finite strain: total Lagrangian, the same
    constitutive kernel in the logarithmic strain space (ind_logstrain.h). */
-typedef enum { IND_FORMULATION_SMALL, IND_FORMULATION_FINITE } IndFormulation;
-extern const char *const IndFormulationTypes[];
+/* The kinematics (-formulation: small or finite strain), registered by name (PETSc's XXXRegister): its table of
+   quadrature-point operations lives in the physics group (assembly_impl.h); a new one is a file there and an
+   entry in IndKinematicsRegistry (assembly.c), whose functions return the tables. */
+typedef struct _IndKinematics IndKinematics;
+extern IndRegistry IndKinematicsRegistry;
 
 typedef struct _p_IndAssembly *IndAssembly;
-struct _p_IndAssembly {
-  IndDisc        disc;
-  IndMaterials   mats;
-  IndHistory     history;
-  IndTangent     tangent;     /* -plastic_tangent: elastic only for comparisons, it loses quadratic Newton */
-  IndFormulation formulation; /* -formulation */
-  IndVectorFn    body_force;
-  void          *body_ctx;
-  PetscReal     *xq; /* with a body force: the quadrature points, ncell x nq x 3 */
-  PetscInt       nfailed;  /* local quadrature points whose return map failed, last residual */
-  PetscInt       nplastic; /* local quadrature points yielding (dp > 0), last residual */
-  PetscReal     *ue, *xe, *fe, *Ke, *G, *DB, *B; /* per-cell work arrays, allocated once */
-  Mat            J;      /* the matrix made by IndAssemblyCreateMatrix (borrowed) */
-  IndMatInsert   insert; /* and its cached insertion (NULL: MatSetValues) */
-};
 
 /* Per local cell, volume averages over the committed history (after IndHistoryCommit). At finite
    strain the Cauchy stress and the spatial Hencky strain are averaged over the current volume, the
@@ -49,6 +38,12 @@ typedef struct {
 
 PetscErrorCode IndAssemblyCreate(IndDisc disc, IndMaterials mats, IndHistory history, IndAssembly *assembly);
 PetscErrorCode IndAssemblyDestroy(IndAssembly *assembly);
+/* Whether the kinematics is of large deformation (-formulation finite). */
+PetscBool      IndAssemblyIsFiniteStrain(IndAssembly assembly);
+/* The discretisation it assembles on (borrowed). */
+IndDisc        IndAssemblyGetDisc(IndAssembly assembly);
+/* Quadrature points of this rank whose return map failed, and those yielding, in the last residual. */
+void           IndAssemblyGetPointCounts(IndAssembly assembly, PetscInt *failed, PetscInt *plastic);
 /* A body force (nN/nm^3) at every quadrature point, for manufactured solutions; NULL removes it. */
 PetscErrorCode IndAssemblySetBodyForce(IndAssembly assembly, IndVectorFn fn, void *ctx);
 /* Creates the AIJ matrix (block size 3) preallocated by a dry run of the cell loop. */
@@ -61,6 +56,9 @@ PetscErrorCode IndAssemblyResidual(IndAssembly assembly, Vec Uloc, Vec Floc);
    there, becomes its committed history. Sets nplastic. */
 PetscErrorCode IndAssemblyCommit(IndAssembly assembly, Vec Uloc);
 PetscErrorCode IndAssemblyJacobian(IndAssembly assembly, Vec Uloc, Mat J);
+/* The Jacobian with the elastic tangent at every point (an elastic unloading from the current state), into any
+   matrix of J's layout (MatSetValues, not J's cached positions). */
+PetscErrorCode IndAssemblyElasticJacobian(IndAssembly assembly, Vec Uloc, Mat K);
 PetscErrorCode IndAssemblyCellAverages(IndAssembly assembly, Vec Uloc, IndCellFields *fields);
 /* Local cells whose deformation gradient F = I + grad u has det F <= 0 at a quadrature point (inverted
    by the displacement Uloc), and the smallest det F met. The finite-strain residual fails such a point,

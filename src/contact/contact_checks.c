@@ -1,0 +1,59 @@
+#include <stdio.h>
+#include "contact_impl.h"
+
+/* The contact's verdicts on a run (run_checks.c and the summary ask them). */
+
+PetscErrorCode IndContactCheckTouched(IndContact c, PetscReal depth_max, PetscInt touching)
+{
+  PetscFunctionBeginUser;
+  PetscCheck(touching > 0, c->comm, PETSC_ERR_USER_INPUT,
+             "The indenter did not touch the contact surface '%s' during loading: at the full depth (-load_depth %.6g "
+             "nm) no node is in contact (its lowest point at z = %.6g nm, the surface's highest node at z = %.6g "
+             "nm); check -load_depth, -indenter_axis, -indenter_surface and the boundary displacements",
+             c->surface, (double)depth_max, (double)(c->indenter.surface - depth_max), (double)c->top);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode IndContactCheckEdge(IndContact c, PetscReal depth, char warning[], size_t len)
+{
+  PetscInt touching = 0;
+
+  PetscFunctionBeginUser;
+  warning[0] = 0;
+  for (PetscInt i = 0; i < c->n; ++i) touching += c->edge[i] && c->status[i] != IND_CONTACT_OPEN ? 1 : 0;
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &touching, 1, MPIU_INT, MPI_SUM, c->comm));
+  if (touching)
+    PetscCall(PetscSNPrintf(warning, len,
+                            "at depth %.6g nm the contact reaches the edge of the modelled surface '%s' (%" PetscInt_FMT
+                            " of its %" PetscInt_FMT " edge nodes touch the indenter): the body is too small for this "
+                            "indenter and depth, and the load, hardness and modulus are those of a finite block",
+                            (double)depth, c->surface, touching, c->nedge));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode IndContactCheckArea(IndContact c, PetscReal area_hc, char warning[], size_t len)
+{
+  PetscFunctionBeginUser;
+  warning[0] = 0;
+  if (area_hc > c->surface_area)
+    PetscCall(PetscSNPrintf(warning, len,
+                            "the Oliver-Pharr contact area A(h_c) = %.6g nm^2 exceeds the area of the modelled "
+                            "surface '%s' (%.6g nm^2, symmetry included): the indenter is too large for this block, "
+                            "and the hardness and modulus are meaningless",
+                            (double)area_hc, c->surface, (double)c->surface_area));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+void IndContactCheckResolved(IndContact c, PetscInt nodes, PetscInt min_nodes, char why[], size_t len)
+{
+  const PetscReal whole = c->symmetry * (PetscReal)nodes;
+
+  why[0] = 0;
+  if (whole < (PetscReal)min_nodes)
+    snprintf(why, len,
+             "H and E_r withheld: at P_max %" PetscInt_FMT " nodes touch the indenter (about %.0f over the whole "
+             "indent), "
+             "fewer than -op_min_contact_nodes %" PetscInt_FMT ": %.1f node spacings across the contact radius do not "
+             "resolve its area; indent deeper or refine the mesh under the tip",
+             nodes, (double)whole, min_nodes, (double)PetscSqrtReal(whole / PETSC_PI));
+}
