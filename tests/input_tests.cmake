@@ -71,6 +71,19 @@ indent_script_test(bad_plastic_kinematic ${EXPECT_ERROR} "-domain_kinematic must
   ${INDENT} ${OK_BOX} ${PLASTIC} -domain_kinematic -2 -bc_fixed bottom)
 indent_script_test(bad_model ${EXPECT_ERROR} "-domain_model: 'viscous' is not one of elastic plastic"
   ${INDENT} ${OK_BOX} ${ELASTIC} -domain_model viscous -bc_fixed bottom)
+indent_script_test(bad_hardening_law ${EXPECT_ERROR}
+  "-domain_hardening: 'hollomon' is not one of voce linear power swift table"
+  ${INDENT} ${OK_BOX} ${PLASTIC} -domain_hardening hollomon -bc_fixed bottom)
+indent_script_test(bad_hardening_exponent ${EXPECT_ERROR} "-domain_hardening_exponent must lie in \\[0, 1\\]"
+  ${INDENT} ${OK_BOX} -domain_young 100 -domain_poisson 0.3 -domain_model plastic -domain_yield 0.3
+  -domain_hardening power -domain_hardening_exponent -0.1 -bc_fixed bottom)
+indent_script_test(bad_hardening_table_missing ${EXPECT_ERROR} "-domain_hardening_file: cannot read 'nowhere.csv'"
+  ${INDENT} ${OK_BOX} -domain_young 100 -domain_poisson 0.3 -domain_model plastic -domain_hardening table
+  -domain_hardening_file nowhere.csv -bc_fixed bottom)
+indent_script_test(bad_hardening_table_falling ${EXPECT_ERROR}
+  "falling_curve.csv', line 4: the stress falls from 0.4 to 0.38 GPa. the curve must not fall"
+  ${INDENT} ${OK_BOX} -domain_young 100 -domain_poisson 0.3 -domain_model plastic -domain_hardening table
+  -domain_hardening_file ${CMAKE_CURRENT_SOURCE_DIR}/data/falling_curve.csv -bc_fixed bottom)
 indent_script_test(bad_plastic_option_on_elastic ${EXPECT_ERROR} "Unknown or unused option\\(s\\): -domain_yield"
   ${INDENT} ${OK_BOX} ${ELASTIC} -domain_yield 0.3 -bc_fixed bottom)
 indent_script_test(bad_load_cutback ${EXPECT_ERROR} "-load_cutback must lie in \\(0, 1\\)"

@@ -448,11 +448,153 @@ static PetscErrorCode TestParamsCheck(void)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The tabulated curve of the tests: (eps_p, stress in GPa). */
+static const PetscReal TABLE[] = {0, 0.3, 0.01, 0.4, 0.05, 0.5, 0.2, 0.55};
+
+/* p of a stress on the curve, from its closed form (the inverse of R), for each law of TestUniaxialClosed. */
+static PetscReal InversePower(const IndPlasticParams *m, PetscReal s)
+{
+  return m->R0 / Young(m) * (PetscPowReal(s / m->R0, 1 / 0.2) - 1);
+}
+
+static PetscReal InverseSwift(const IndPlasticParams *m, PetscReal s)
+{
+  (void)m;
+  return PetscPowReal(s / 0.8, 1 / 0.25) - 0.01;
+}
+
+static PetscReal InverseTable(const IndPlasticParams *m, PetscReal s)
+{
+  const PetscInt n = (PetscInt)(sizeof(TABLE) / sizeof(TABLE[0])) / 2;
+  (void)m;
+  for (PetscInt i = 0; i + 1 < n; ++i)
+    if (s <= TABLE[2 * i + 3]) return TABLE[2 * i] + (s - TABLE[2 * i + 1]) * (TABLE[2 * i + 2] - TABLE[2 * i]) /
+                                                     (TABLE[2 * i + 3] - TABLE[2 * i + 1]);
+  return NAN;
+}
+
+/* Monotonic tension without kinematic hardening, against the law's closed form written independently of R:
+   exx = sigma / E + p(sigma). */
+static PetscErrorCode TestUniaxialClosed(const char *name, const IndPlasticParams *m,
+                                         PetscReal (*inverse)(const IndPlasticParams *, PetscReal))
+{
+  IndPlasticState st;
+  PetscReal       lat = 0.0, sigma[6], dp, worst = 0.0;
+  const PetscReal emax = 0.1;
+  const int       nsteps = 50;
+  char            label[128];
+
+  PetscFunctionBeginUser;
+  memset(&st, 0, sizeof(st));
+  for (int k = 1; k <= nsteps; ++k) {
+    const PetscReal exx = emax * k / nsteps;
+    PetscCall(UniaxialStep(m, exx, &lat, &st, &st, sigma, &dp));
+    if (st.p > 0) worst = PetscMax(worst, PetscAbsReal(sigma[0] / Young(m) + inverse(m, sigma[0]) - exx) / exx);
+  }
+  PetscCheck(st.p > 0.05, PETSC_COMM_SELF, PETSC_ERR_PLIB, "%s: only p = %g at the end", name, (double)st.p);
+  PetscCall(PetscSNPrintf(label, sizeof(label), "uniaxial %s: exx = sigma / E + p(sigma), closed form", name));
+  CHECK_TOL(label, worst, 1e-10);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* A bad input is refused with a message holding `expect`. */
+static PetscErrorCode ExpectRefused(PetscErrorCode ierr, const char what[], const char expect[])
+{
+  char *msg = NULL;
+
+  PetscFunctionBeginUser;
+  PetscCheck(ierr != 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "%s was accepted", what);
+  PetscCall(PetscErrorMessage(ierr, NULL, &msg));
+  PetscCheck(msg && strstr(msg, expect), PETSC_COMM_SELF, PETSC_ERR_PLIB, "%s: the message '%s' does not say '%s'",
+             what, msg ? msg : "(none)", expect);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Non-physical parameters of the power and Swift laws, and tables that are not curves. */
+static PetscErrorCode TestNewLawsRefused(void)
+{
+  const struct {
+    const char *text, *expect;
+  } tables[] = {
+    {"eps_p,stress\n0,0.3\n0.01,abc\n", "line 3: '0.01 abc' is not two numbers"},
+    {"0,0.3\n", "holds 1 point; a curve needs at least 2"},
+    {"0,0.3\n0.01,0.4\n0.02,0.35\n", "the stress falls from 0.4 to 0.35 GPa"},
+    {"0.001,0.3\n0.01,0.4\n", "its first point must be at 0"},
+    {"0,0.3\n0.01,0.4\n0.01,0.45\n", "the plastic strain does not increase"},
+    {"0,0\n0.01,0.4\n", "must be > 0 GPa"},
+  };
+  IndPlasticParams m;
+  PetscErrorCode   ierr;
+  PetscInt         n;
+  PetscReal       *pts = NULL;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
+  m = Law(VOCE, 0.3, 0.5, 20.0, 0.0, 0.0);
+  IndHardeningSetPower(&m, -0.1);
+  ierr = IndPlasticParamsCheck(&m, "film_", PETSC_COMM_SELF);
+  PetscCall(ExpectRefused(ierr, "power law n = -0.1", "-film_hardening_exponent must lie in [0, 1]"));
+  IndHardeningSetSwift(&m, -1.0, 0.01, 0.2);
+  ierr = IndPlasticParamsCheck(&m, "film_", PETSC_COMM_SELF);
+  PetscCall(ExpectRefused(ierr, "Swift K = -1", "-film_swift_k must be > 0"));
+  IndHardeningSetSwift(&m, 1.0, 0.0, 0.2);
+  ierr = IndPlasticParamsCheck(&m, "film_", PETSC_COMM_SELF);
+  PetscCall(ExpectRefused(ierr, "Swift eps0 = 0", "-film_swift_eps0 must be > 0"));
+  for (size_t k = 0; k < sizeof(tables) / sizeof(tables[0]); ++k) {
+    ierr = IndHardeningTableParse(PETSC_COMM_SELF, tables[k].text, "-film_hardening_file 't.csv'", &n, &pts);
+    PetscCall(PetscFree(pts));
+    PetscCall(ExpectRefused(ierr, tables[k].text, tables[k].expect));
+  }
+  PetscCall(PetscPopErrorHandler());
+  /* a header, comments, blank lines and separators of every kind are a curve */
+  PetscCall(IndHardeningTableParse(PETSC_COMM_SELF, "strain;stress\n# a comment\n\n0 0.3\n0.01\t0.4\r\n0.1,0.5",
+                                   "t.csv", &n, &pts));
+  PetscCheck(n == 3 && pts[4] == 0.1 && pts[5] == 0.5, PETSC_COMM_SELF, PETSC_ERR_PLIB, "table parsed to %" PetscInt_FMT
+             " points", n);
+  PetscCall(PetscFree(pts));
+  PetscCall(PetscPrintf(PETSC_COMM_SELF, "New laws: 3 bad parameters and %d bad tables refused, each saying why\n",
+                        (int)(sizeof(tables) / sizeof(tables[0]))));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* R and R' of the new laws against their formulas and central differences (the table's beyond-rules too). */
+static PetscErrorCode TestNewLawsValues(void)
+{
+  IndPlasticParams pw = Law(VOCE, 0.3, 0, 0, 0, 0), sw = pw, tf = pw, ts = pw;
+  PetscReal        worst = 0, worst_d = 0;
+
+  PetscFunctionBeginUser;
+  IndHardeningSetPower(&pw, 0.2);
+  IndHardeningSetSwift(&sw, 0.8, 0.01, 0.25);
+  IndHardeningSetTable(&tf, 4, TABLE, PETSC_FALSE);
+  IndHardeningSetTable(&ts, 4, TABLE, PETSC_TRUE);
+  for (int k = 0; k <= 60; ++k) {
+    const PetscReal p = 0.3 * k / 60 + 1e-4, h = 1e-7;
+    const PetscReal expect[4] = {0.3 * PetscPowReal(1 + Young(&pw) * p / 0.3, 0.2), 0.8 * PetscPowReal(0.01 + p, 0.25),
+                                 p < 0.2 ? NAN : 0.55, p < 0.2 ? NAN : 0.55 + (p - 0.2) * 0.05 / 0.15};
+    const IndPlasticParams *ms[4] = {&pw, &sw, &tf, &ts};
+    for (int l = 0; l < 4; ++l) {
+      const PetscReal fd = (IndPlasticR(ms[l], p + h) - IndPlasticR(ms[l], p - h)) / (2 * h);
+      if (!PetscIsNanReal(expect[l])) worst = PetscMax(worst, PetscAbsReal(IndPlasticR(ms[l], p) / expect[l] - 1));
+      if (PetscAbsReal(p - 0.01) > 2 * h && PetscAbsReal(p - 0.05) > 2 * h && PetscAbsReal(p - 0.2) > 2 * h)
+        worst_d = PetscMax(worst_d, PetscAbsReal(IndPlasticdR(ms[l], p) - fd) / PetscMax(1.0, PetscAbsReal(fd)));
+    }
+  }
+  CHECK_TOL("power, Swift, table: R(p) against its formula", worst, 1e-14);
+  CHECK_TOL("power, Swift, table: R'(p) against central differences", worst_d, 1e-6);
+  CHECK_TOL("power: R(0) = R0, Swift: R(0) = K eps0^n = R0, table: R(0) = its first stress",
+            PetscAbsReal(IndPlasticR(&pw, 0) - 0.3) + PetscAbsReal(IndPlasticR(&sw, 0) - sw.R0) +
+              PetscAbsReal(IndPlasticR(&tf, 0) - 0.3), 1e-15);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 int main(int argc, char **argv)
 {
   const IndPlasticParams voce = Law(VOCE, 0.3, 0.5, 20.0, 0.0, 1.0);
   const IndPlasticParams linear = Law(LINEAR, 0.3, 0.0, 0.0, 2.0, 0.0);
   const IndPlasticParams linear_kin = Law(LINEAR, 0.3, 0.0, 0.0, 2.0, 5.0);
+  IndPlasticParams       power = Law(VOCE, 0.3, 0, 0, 0, 0), power_kin = Law(VOCE, 0.3, 0, 0, 0, 2.0), swift = power;
+  IndPlasticParams       table_flat = power, table_slope = power;
   struct {
     const char      *name;
     IndPlasticParams m;
@@ -464,6 +606,11 @@ int main(int argc, char **argv)
     {"perfect (Rs = R0)",    Law(VOCE, 0.3, 0.3, 20.0, 0.0, 0.0) },
     {"perfect (linear h=0)", Law(LINEAR, 0.3, 0.0, 0.0, 0.0, 0.0)},
     {"mild Voce softening",  Law(VOCE, 0.5, 0.3, 50.0, 0.0, 0.0) },
+    {"power (Dao)",          power                                             },
+    {"power + Prager",       power_kin                                         },
+    {"Swift",                swift                                             },
+    {"table, flat beyond",   table_flat                                        },
+    {"table, slope beyond",  table_slope                                       },
     {"elastic_only",         voce                                              },
   };
   const int          nlaws = (int)(sizeof(laws) / sizeof(laws[0]));
@@ -472,6 +619,16 @@ int main(int argc, char **argv)
   int                used = 0, skipped = 0, plastic = 0;
 
   PetscCall(PetscInitialize(&argc, &argv, NULL, NULL));
+  IndHardeningSetPower(&power, 0.2);
+  IndHardeningSetPower(&power_kin, 0.2);
+  IndHardeningSetSwift(&swift, 0.8, 0.01, 0.25);
+  IndHardeningSetTable(&table_flat, 4, TABLE, PETSC_FALSE);
+  IndHardeningSetTable(&table_slope, 4, TABLE, PETSC_TRUE);
+  laws[7].m  = power;
+  laws[8].m  = power_kin;
+  laws[9].m  = swift;
+  laws[10].m = table_flat;
+  laws[11].m = table_slope;
   laws[nlaws - 1].m.elastic_only = PETSC_TRUE;
   for (int l = 0; l < nlaws; ++l) PetscCall(IndPlasticParamsCheck(&laws[l].m, "film_", PETSC_COMM_SELF));
   PetscCall(TestParamsCheck());
@@ -481,6 +638,14 @@ int main(int argc, char **argv)
   PetscCall(TestUniaxial("Voce + Prager", &voce));
   PetscCall(TestUniaxial("linear isotropic", &linear));
   PetscCall(TestUniaxial("linear + Prager", &linear_kin));
+  PetscCall(TestUniaxial("power + Prager", &power_kin));
+  PetscCall(TestUniaxial("Swift", &swift));
+  PetscCall(TestUniaxial("table, slope beyond", &table_slope));
+  PetscCall(TestUniaxialClosed("power (Dao)", &power, InversePower));
+  PetscCall(TestUniaxialClosed("Swift", &swift, InverseSwift));
+  PetscCall(TestUniaxialClosed("table", &table_flat, InverseTable));
+  PetscCall(TestNewLawsValues());
+  PetscCall(TestNewLawsRefused());
   PetscCall(PetscPrintf(PETSC_COMM_SELF, "Tension-compression cycle (Bauschinger)\n"));
   PetscCall(TestCycle("Voce + Prager", &voce));
   PetscCall(TestCycle("linear + Prager", &linear_kin));

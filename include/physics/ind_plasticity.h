@@ -26,19 +26,24 @@ typedef struct {
   const IndHardeningLaw *law;       /* R(p) and R'(p) (NULL: elastic_only) */
   PetscReal              R0;        /* initial yield stress, GPa: -<region>_yield */
   PetscReal              c[IND_HARDENING_NPARAM]; /* the law's own parameters, named in its file */
+  const PetscReal       *table;  /* a tabulated law's points, ntable pairs (eps_p, stress in GPa); its own */
+  PetscInt               ntable;
   PetscReal              H;         /* Prager kinematic modulus, GPa: -<region>_kinematic */
   PetscBool              elastic_only;   /* skip the return: linear elasticity with the same moduli */
   PetscInt               max_iterations; /* cap on the scalar return solve; 0 means 100 */
 } IndPlasticParams;
 
 /* A hardening law: R(p) and its derivative, pure; reading its parameters from the region's options (inside the
-   region's PetscOptionsBegin block, which `po` is) and checking them, naming the offending option by prefix. */
+   region's PetscOptionsBegin block, which `po` is; R0 too, which a law may derive from its own parameters) and
+   checking them, naming the offending option by prefix. */
 struct _IndHardeningLaw {
   const char *name;
   PetscReal (*R)(const IndPlasticParams *m, PetscReal p);
   PetscReal (*dR)(const IndPlasticParams *m, PetscReal p);
   PetscErrorCode (*read)(PetscOptionItems *po, MPI_Comm comm, const char region[], IndPlasticParams *m);
   PetscErrorCode (*check)(const IndPlasticParams *m, const char prefix[], MPI_Comm comm);
+  /* frees what read allocated (NULL: nothing) */
+  PetscErrorCode (*destroy)(IndPlasticParams *m);
 };
 
 /* History of a quadrature point at the end of a converged step; all zero for a virgin material. */

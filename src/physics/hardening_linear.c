@@ -19,7 +19,7 @@ static PetscErrorCode Read(PetscOptionItems *PetscOptionsObject, MPI_Comm comm, 
                            IndPlasticParams *m)
 {
   PetscFunctionBeginUser;
-  (void)comm, (void)region;
+  PetscCall(IndHardeningReadYield(PetscOptionsObject, comm, region, m));
   PetscCall(IndOptionsReal("-hardening_slope", "Linear isotropic hardening slope h", "GPa", NULL, SLOPE(m), &SLOPE(m),
                            NULL));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -35,7 +35,7 @@ static PetscErrorCode Check(const IndPlasticParams *m, const char pre[], MPI_Com
 
 const IndHardeningLaw *IndHardeningLinear(void)
 {
-  static const IndHardeningLaw law = {"linear", R, dR, Read, Check};
+  static const IndHardeningLaw law = {"linear", R, dR, Read, Check, NULL};
   return &law;
 }
 

@@ -21,6 +21,7 @@ static PetscErrorCode Read(PetscOptionItems *PetscOptionsObject, MPI_Comm comm, 
   PetscBool set;
 
   PetscFunctionBeginUser;
+  PetscCall(IndHardeningReadYield(PetscOptionsObject, comm, region, m));
   PetscCall(IndOptionsReal("-saturation", "Voce saturation stress Rs", "GPa", IND_REQUIRED " with voce", RS(m),
                            &RS(m), &set));
   if (!IndHelpListing()) PetscCall(IndHardeningRequire(comm, region, "saturation", set, "Voce saturation stress, GPa"));
@@ -47,7 +48,7 @@ static PetscErrorCode Check(const IndPlasticParams *m, const char pre[], MPI_Com
 
 const IndHardeningLaw *IndHardeningVoce(void)
 {
-  static const IndHardeningLaw law = {"voce", R, dR, Read, Check};
+  static const IndHardeningLaw law = {"voce", R, dR, Read, Check, NULL};
   return &law;
 }
 

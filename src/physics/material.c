@@ -8,7 +8,6 @@ const char *const IndModelTypes[] = {"elastic", "plastic", "IndModel", "IND_MODE
 static PetscErrorCode ReadPlastic(MPI_Comm comm, const char prefix[], IndMaterial *m)
 {
   IndPlasticParams *pp = &m->plastic;
-  PetscBool         set;
   char              title[2 * IND_NAME_LEN + 64];
 
   PetscFunctionBeginUser;
@@ -22,8 +21,6 @@ static PetscErrorCode ReadPlastic(MPI_Comm comm, const char prefix[], IndMateria
     PetscCall(PetscSNPrintf(option, sizeof(option), "-%shardening", prefix));
     PetscCall(IndHardeningFind(comm, option, name, &pp->law));
   }
-  PetscCall(IndOptionsReal("-yield", "Initial yield stress R0", "GPa", IND_REQUIRED, pp->R0, &pp->R0, &set));
-  if (!IndHelpListing()) PetscCall(IndHardeningRequire(comm, m->region, "yield", set, "initial yield stress, GPa"));
   PetscCall(pp->law->read(PetscOptionsObject, comm, m->region, pp));
   PetscCall(IndOptionsReal("-kinematic", "Prager kinematic hardening modulus H", "GPa", NULL, pp->H, &pp->H, NULL));
   PetscCall(IndOptionsInt("-return_max_it", "Iteration cap of the scalar return-map solve", "0, meaning 100",
@@ -135,6 +132,10 @@ PetscErrorCode IndMaterialsDestroy(IndMaterials *mats)
 {
   PetscFunctionBeginUser;
   if (!*mats) PetscFunctionReturn(PETSC_SUCCESS);
+  for (PetscInt k = 0; k < (*mats)->n; ++k) {
+    IndPlasticParams *pp = &(*mats)->mat[k].plastic;
+    if (pp->law && pp->law->destroy) PetscCall(pp->law->destroy(pp));
+  }
   PetscCall(PetscFree((*mats)->cell_material));
   PetscCall(PetscFree(*mats));
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -194,7 +194,8 @@ PetscErrorCode IndLoadPathReject(IndLoadPath *lp, MPI_Comm comm, const char why[
 PetscErrorCode IndLoadPathState(void *obj, IndStateFile f)
 {
   IndLoadPath *lp   = (IndLoadPath *)obj;
-  PetscReal    s[5] = {lp->t, lp->dt, (PetscReal)lp->accepted, (PetscReal)lp->cutbacks, (PetscReal)lp->cutbacks_in_a_row};
+  PetscReal    s[5] = {lp->t, lp->dt, (PetscReal)lp->accepted, (PetscReal)lp->cutbacks,
+                       (PetscReal)lp->cutbacks_in_a_row};
 
   PetscFunctionBeginUser;
   PetscCall(IndStateReals(f, "position", 5, s));
