@@ -9,6 +9,8 @@ static const char help[] = "indent-op: Oliver-Pharr analysis of a load-displacem
                            "  -op_indenter_modulus E   GPa; 0 for a rigid indenter (default); diamond: 1141\n"
                            "  -op_indenter_poisson nu  (0.07)\n"
                            "  -op_poisson nu           the sample's, for its modulus E (0.3)\n"
+                           "  -op_area_coefficients C0,C1,...: a calibrated area function\n"
+                           "                           A = C0 h^2 + C1 h + C2 h^(1/2) + ...\n"
                            "  -indenter_type, -indenter_radius (nm), -indenter_angle (degrees): the area function "
                              "A(h_c)\n";
 
@@ -21,6 +23,22 @@ static const char help[] = "indent-op: Oliver-Pharr analysis of a load-displacem
 static PetscReal Area(PetscReal hc, void *ctx)
 {
   return IndIndenterArea((const IndIndenter *)ctx, hc);
+}
+
+#define MAX_AREA_COEFFICIENTS 9
+
+/* A calibrated area function (Oliver and Pharr 1992): A = C0 h^2 + C1 h + C2 h^(1/2) + C3 h^(1/4) + ... */
+typedef struct {
+  PetscInt  n;
+  PetscReal c[MAX_AREA_COEFFICIENTS];
+} AreaFit;
+
+static PetscReal CalibratedArea(PetscReal hc, void *ctx)
+{
+  const AreaFit *f = (const AreaFit *)ctx;
+  PetscReal      A = 0, e = 2;
+  for (PetscInt k = 0; k < f->n; ++k, e /= 2) A += f->c[k] * PetscPowReal(hc, e);
+  return A;
 }
 
 /* Reads the columns depth_nm, load_uN and (if present) contact_area_nm2 of a CSV file. */
@@ -78,7 +96,8 @@ static PetscErrorCode Analyse(void)
   IndIndenter ind;
   PetscReal  *h, *P, *A, angle = 0;
   PetscInt    n = 0, imax = 0;
-  PetscBool   has_file, has_type;
+  PetscBool   has_file, has_type, has_fit;
+  AreaFit     fit = {MAX_AREA_COEFFICIENTS, {0}};
   int         code;
 
   PetscFunctionBeginUser;
@@ -93,15 +112,24 @@ static PetscErrorCode Analyse(void)
     NULL));
   PetscCall(IndOptionsReal("-indenter_angle", "Cone half-angle or pyramid face angle (0: the standard one)", "degrees",
     NULL, angle, &angle, NULL));
+  PetscCall(IndOptionsRealArray("-op_area_coefficients",
+    "A calibrated area function instead of the indenter's: A = C0 h_c^2 + C1 h_c + C2 h_c^(1/2) + C3 h_c^(1/4) + ...",
+    "C0,C1,... (nm^2, nm, ...)", NULL, fit.c, &fit.n, &has_fit));
   PetscOptionsEnd();
+  if (!has_fit) fit.n = 0;
   if (IndHelpListing()) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCheck(has_file, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-op_file is required (a CSV with depth_nm and load_uN)");
-  PetscCheck(has_type, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-indenter_type is required for the area function");
-  ind.angle = angle * PETSC_PI / 180;
-  PetscCheck(!IndIndenterSetUp(&ind), PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE,
-    "-indenter_type %s: bad -indenter_radius or -indenter_angle", IndIndenterTypes[ind.type]);
+  PetscCheck(has_type || fit.n, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG,
+    "-indenter_type or -op_area_coefficients is required for the area function");
+  PetscCheck(!(has_fit && has_type), PETSC_COMM_WORLD, PETSC_ERR_ARG_INCOMP,
+    "-op_area_coefficients and -indenter_type both give the area function: give one");
+  if (!has_fit) {
+    ind.angle = angle * PETSC_PI / 180;
+    PetscCheck(!IndIndenterSetUp(&ind), PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE,
+      "-indenter_type %s: bad -indenter_radius or -indenter_angle", IndIndenterTypes[ind.type]);
+  }
   PetscCall(ReadCurve(path, &n, &h, &P, &A));
-  code = IndOliverPharr(h, P, n, &p, Area, &ind, &r);
+  code = fit.n ? IndOliverPharr(h, P, n, &p, CalibratedArea, &fit, &r) : IndOliverPharr(h, P, n, &p, Area, &ind, &r);
   PetscCheck(code != 1, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG,
     "'%s': fewer than 3 unloading points with P >= (1 - %g) P_max: record more unloading steps or raise -op_fraction",
     path, (double)p.fraction);
@@ -111,8 +139,8 @@ static PetscErrorCode Analyse(void)
     "'%s': the unloading branch is not a power law (fit gave alpha %g, m %g)", path, (double)r.alpha, (double)r.m);
   for (PetscInt i = 1; i < n; ++i)
     if (P[i] > P[imax]) imax = i;
-  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "Oliver-Pharr analysis of %s (%s indenter)\n", path,
-    IndIndenterTypes[ind.type]));
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "Oliver-Pharr analysis of %s (%s)\n", path,
+    fit.n ? "calibrated area function" : IndIndenterTypes[ind.type]));
   PetscCall(PetscPrintf(PETSC_COMM_WORLD, "  P_max %.6g uN at h_max %.6g nm\n", (double)r.P_max, (double)r.h_max));
   PetscCall(PetscPrintf(PETSC_COMM_WORLD,
     "  fit of %" PetscInt_FMT " unloading points: P = %.6g (h - %.6g)^%.6g, rms misfit %.3g uN\n", r.npoints,
