@@ -137,6 +137,8 @@ static PetscErrorCode Analyse(void)
     "-op_fraction must lie in (0, 1], -op_epsilon and -op_beta be > 0");
   PetscCheck(code == 0, PETSC_COMM_WORLD, PETSC_ERR_NOT_CONVERGED,
     "'%s': the unloading branch is not a power law (fit gave alpha %g, m %g)", path, (double)r.alpha, (double)r.m);
+  PetscCheck(!fit.n || r.A > 0, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE,
+    "-op_area_coefficients give A(h_c) = %g nm^2 at h_c = %g nm: an area must be > 0", (double)r.A, (double)r.h_c);
   for (PetscInt i = 1; i < n; ++i)
     if (P[i] > P[imax]) imax = i;
   PetscCall(PetscPrintf(PETSC_COMM_WORLD, "Oliver-Pharr analysis of %s (%s)\n", path,

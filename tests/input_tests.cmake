@@ -90,6 +90,9 @@ indent_script_test(bad_load_cutback ${EXPECT_ERROR} "-load_cutback must lie in \
   ${INDENT} ${OK_BOX} ${ELASTIC} -load_cutback 1.5 -bc_fixed bottom)
 indent_script_test(bad_op_file ${EXPECT_ERROR} "^indent-op: error: Cannot open the curve 'nowhere.csv' \\(-op_file\\)"
   $<TARGET_FILE:indent-op> -op_file nowhere.csv -indenter_type berkovich)
+indent_script_test(bad_op_area_coefficients ${EXPECT_ERROR}
+  "-op_area_coefficients give A\\(h_c\\) = 0.* an area must be > 0"
+  $<TARGET_FILE:indent-op> -op_file ${CMAKE_CURRENT_SOURCE_DIR}/data/op_curve.csv -op_area_coefficients 0,0)
 indent_script_test(bad_op_indenter_type ${EXPECT_ERROR}
   "^indent-op: error: -indenter_type: 'pyramid' is not one of sphere cone berkovich"
   $<TARGET_FILE:indent-op> -op_file nowhere.csv -indenter_type pyramid)

@@ -552,6 +552,15 @@ static PetscErrorCode TestNewLawsRefused(void)
   PetscCheck(n == 3 && pts[4] == 0.1 && pts[5] == 0.5, PETSC_COMM_SELF, PETSC_ERR_PLIB, "table parsed to %" PetscInt_FMT
              " points", n);
   PetscCall(PetscFree(pts));
+  /* a law added at run time is found by its name, and listed after the built-in ones */
+  {
+    const IndHardeningLaw *law;
+    PetscCall(IndRegistryAdd(&IndHardeningRegistry, "linear_again", (IndRegistryFn)IndHardeningLinear));
+    PetscCall(IndHardeningFind(PETSC_COMM_SELF, "-film_hardening", "linear_again", &law));
+    PetscCheck(law == IndHardeningLinear() && !strcmp(IndHardeningRegistry.names[IndHardeningRegistry.n - 1],
+               "linear_again") && !IndHardeningRegistry.names[IndHardeningRegistry.n], PETSC_COMM_SELF,
+               PETSC_ERR_PLIB, "a law registered at run time is not found or not listed last");
+  }
   PetscCall(PetscPrintf(PETSC_COMM_SELF, "New laws: 3 bad parameters and %d bad tables refused, each saying why\n",
                         (int)(sizeof(tables) / sizeof(tables[0]))));
   PetscFunctionReturn(PETSC_SUCCESS);

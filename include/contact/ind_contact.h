@@ -121,7 +121,6 @@ PetscReal      IndContactGetCommittedDepth(IndContact contact);
    contact's table of operations and its defaults. */
 extern IndRegistry IndContactCouplingRegistry;
 PetscErrorCode IndContactSetCoupling(IndContact contact, const char name[]);
-PetscErrorCode IndContactGetCoupling(IndContact contact, const char **name);
 /* Whether the contact leaves the Jacobian as assembled (symmetric: CG), and whether its reactions come from the
    residual (load control needs that). */
 PetscBool      IndContactJacobianIsSymmetric(IndContact contact);

@@ -1,5 +1,5 @@
 #pragma once
-/* Implementations registered by name and chosen by an option (PETSc's XXXRegister / XXXSetType): a strategy is a
+/* Implementations registered by name and chosen by an option (as PETSc's KSPRegister / KSPSetType): a strategy is a
    file with its table, listed in its family's registry (IndHardeningRegistry, IndKinematicsRegistry,
    IndContactCouplingRegistry) or added at run time with IndRegistryAdd. The names keep the order of registration,
    which -help lists; PETSc's PetscFunctionList would do, but it does not keep that order. */

@@ -17,7 +17,7 @@ extern const char *const IndTangentTypes[];
 
 /* -formulation: small strain (the paper's model), or finite strain: total Lagrangian, the same
    constitutive kernel in the logarithmic strain space (ind_logstrain.h). */
-/* The kinematics (-formulation: small or finite strain), registered by name (PETSc's XXXRegister): its table of
+/* The kinematics (-formulation: small or finite strain), registered by name (as PETSc's KSPRegister): its table of
    quadrature-point operations lives in the physics group (assembly_impl.h); a new one is a file there and an
    entry in IndKinematicsRegistry (assembly.c), whose functions return the tables. */
 typedef struct _IndKinematics IndKinematics;

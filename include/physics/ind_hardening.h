@@ -1,6 +1,6 @@
 #pragma once
-/* Isotropic hardening laws R(p), registered by name and chosen per region by -<region>_hardening (PETSc's
-   XXXRegister / XXXSetType): a new law is a file (hardening_<name>.c) that fills an IndHardeningLaw, plus one
+/* Isotropic hardening laws R(p), registered by name and chosen per region by -<region>_hardening (as PETSc's
+   KSPRegister / KSPSetType): a new law is a file (hardening_<name>.c) that fills an IndHardeningLaw, plus one
    entry in IndHardeningRegistry (hardening.c). The laws here:
    - voce:   R(p) = Rs - (Rs - R0) exp(-gamma p)  (-<region>_yield R0, -<region>_saturation Rs, -<region>_voce_rate);
    - linear: R(p) = R0 + h p                      (-<region>_yield, -<region>_hardening_slope h);

@@ -44,13 +44,10 @@ DM             IndAppGetDM(IndApp app);
 IndMesh        IndAppGetMesh(IndApp app);
 IndDisc        IndAppGetDisc(IndApp app);
 IndMaterials   IndAppGetMaterials(IndApp app);
-IndHistory     IndAppGetHistory(IndApp app);
 IndBC          IndAppGetBC(IndApp app);
 IndContact     IndAppGetContact(IndApp app);
 IndAssembly    IndAppGetAssembly(IndApp app);
 IndSolver      IndAppGetSolver(IndApp app);
-IndOutput      IndAppGetOutput(IndApp app);
-IndSummary     IndAppGetSummary(IndApp app);
 const IndLoadPath *IndAppGetLoadPath(IndApp app);
 /* The displacement of the last accepted step (or of the step under way, in a step monitor), global. */
 Vec            IndAppGetSolution(IndApp app);

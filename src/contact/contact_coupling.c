@@ -1,6 +1,6 @@
 #include "contact_impl.h"
 
-/* The couplings of the contact with the Newton solve, by name (PETSc's XXXRegister pattern, ind_registry.h): a new
+/* The couplings of the contact with the Newton solve, by name (as PETSc's KSPRegister, ind_registry.h): a new
    one is a file with its create function and an entry in IndContactCouplingRegistry. */
 PetscErrorCode IndContactCreate_FixedPoint(IndContact);
 PetscErrorCode IndContactCreate_Newton(IndContact);
@@ -20,12 +20,10 @@ PetscErrorCode IndContactSetCoupling(IndContact c, const char name[])
   PetscCall(IndRegistryGet(&IndContactCouplingRegistry, c->comm, "-contact_uzawa", name, &fn));
   create = (PetscErrorCode(*)(IndContact))fn;
   PetscCall(PetscMemzero(&c->ops, sizeof(c->ops)));
-  PetscCall(PetscStrncpy(c->coupling, name, sizeof(c->coupling)));
   PetscCall((*create)(c));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-IND_GETTER_OUT(const char *, IndContactGetCoupling, IndContact, o->coupling)
 IND_GETTER(PetscBool, IndContactJacobianIsSymmetric, IndContact, o->ops.jacobian ? PETSC_FALSE : PETSC_TRUE)
 IND_GETTER(PetscBool, IndContactReactionsFromResidual, IndContact, o->ops.residual_multipliers)
 IND_GETTER(PetscInt, IndContactOuterMax, IndContact, o->max_outer)

@@ -23,7 +23,6 @@ typedef struct {
 struct _p_IndContact {
   MPI_Comm    comm;
   IndIndenter indenter;
-  char          coupling[IND_NAME_LEN]; /* -contact_uzawa */
   IndContactOps ops;
   PetscReal     last_change; /* the reaction change of the previous outer iteration of the step */
   PetscReal   mu;        /* Coulomb friction coefficient */
