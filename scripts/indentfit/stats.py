@@ -1,0 +1,80 @@
+"""What a fit's optimum can say: the parameters' 95% confidence intervals and correlations from the Jacobian
+at the optimum and the noise, and whether the curves can tell the parameters apart at all.
+
+The residuals are r(u) in scaled coordinates u (params.py). Near the optimum r(u + du) ~ r + J du, so with
+residual noise of standard deviation s the covariance of u is s^2 (J^T J)^-1 (Gauss-Newton), and that of
+the parameters D cov_u D with D = diag(dx/du). s is the measured noise carried into residual units when
+it is given, and otherwise the residuals' own scatter, sqrt(r.r / (m - p)), which also holds what the
+model cannot fit.
+
+The data cannot tell the parameters apart when some combination of them can move far within the bounds
+and change the curves by less than the noise: the right singular vector of J's smallest singular value
+sigma_min is that combination, and t s / sigma_min is how far (in u, fractions of the bounds' ranges) it
+may move inside the 95% interval. Chen et al. (J. Mech. Phys. Solids 55 (2007) 1618) built such
+"mystical" materials, whose Berkovich curves coincide.
+"""
+import numpy as np
+from scipy import stats as spstats
+
+
+def analyse(J, r, params, u, noise_sigma=None, spread_limit=0.05):
+    """J: m x p Jacobian in u; r: residuals at the optimum; noise_sigma: residual-unit noise per residual
+    (array of m) or None for the residuals' own scatter. Returns a dict (see the keys at the end)."""
+    m, p = J.shape
+    dof = max(m - p, 1)
+    if noise_sigma is None:
+        s = float(np.sqrt(np.dot(r, r) / dof))
+        Jw = J / s
+        noise = "the residuals' scatter"
+    else:
+        Jw = J / np.asarray(noise_sigma)[:, None]
+        noise = "the measured noise"
+    t = float(spstats.t.ppf(0.975, dof))
+    U, sv, Vt = np.linalg.svd(Jw, full_matrices=False)
+    tiny = sv.max() * 1e-12 if sv.max() > 0 else 1.0
+    inv = np.where(sv > tiny, 1.0 / np.maximum(sv, tiny), np.inf)
+    cov_u = (Vt.T * inv**2) @ Vt
+    D = np.array([pp.dvalue_du(uu) for pp, uu in zip(params, u)])
+    cov = cov_u * np.outer(D, D)
+    sd = np.sqrt(np.abs(np.diag(cov)))
+    with np.errstate(invalid="ignore", divide="ignore"):
+        corr = cov / np.outer(sd, sd)
+    x = np.array([pp.value(uu) for pp, uu in zip(params, u)])
+    weak = Vt[-1] * np.sign(Vt[-1][np.argmax(np.abs(Vt[-1]))])
+    spread = float(t * inv[-1])
+    at_bound = [pp.name for pp, uu in zip(params, u) if uu <= 1e-6 or uu >= 1 - 1e-6]
+    return {
+        "values": x, "sd": sd, "ci95": t * sd, "corr": corr, "cov": cov, "t": t, "dof": dof, "noise": noise,
+        "singular_values": sv, "condition": float(sv[0] / sv[-1]) if sv[-1] > 0 else float("inf"),
+        "weak_direction": weak, "weak_spread": spread,
+        "distinguishable": bool(spread <= spread_limit), "spread_limit": spread_limit, "at_bound": at_bound,
+    }
+
+
+def verdict_lines(res, params):
+    """Plain sentences on what the data can and cannot tell."""
+    lines = []
+    if res["at_bound"]:
+        lines.append("at a bound: " + ", ".join(res["at_bound"]) + " (widen the bounds: the interval there means "
+                     "little)")
+    if res["distinguishable"]:
+        lines.append(f"the curves determine every parameter: no combination moves more than "
+                     f"{100 * res['weak_spread']:.2g}% of the bounds' ranges within the 95% interval "
+                     f"(limit {100 * res['spread_limit']:.2g}%)")
+        return lines
+    parts = [f"{'+' if c >= 0 else '-'}{abs(c):.2f} {p.name}" for p, c in zip(params, res["weak_direction"])
+             if abs(c) >= 0.05]
+    far = "without limit" if not np.isfinite(res["weak_spread"]) else f"{100 * res['weak_spread']:.3g}% of their " \
+        "bounds' ranges"
+    lines.append("WARNING: the curves cannot tell the parameters apart. Along the combination "
+                 f"({' '.join(parts)}) of scaled parameters they may move {far} "
+                 "and stay within the noise: different materials give these same curves "
+                 "(the 'mystical materials' of Chen et al., J. Mech. Phys. Solids 55 (2007) 1618).")
+    pairs = [(params[i].name, params[j].name, res["corr"][i, j]) for i in range(len(params))
+             for j in range(i + 1, len(params)) if abs(res["corr"][i, j]) >= 0.9]
+    if pairs:
+        lines.append("  correlated: " + ", ".join(f"{a} and {b} ({c:+.3f})" for a, b, c in pairs))
+    lines.append("  What would resolve it: a curve from a second indenter of another shape (a sphere, or a cone "
+                 "of another angle) fitted together with this one, the imprint's pile-up, or a parameter "
+                 "fixed from another test (e.g. E from an unloading slope or a tensile test).")
+    return lines
