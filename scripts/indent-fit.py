@@ -30,8 +30,9 @@ import argparse
 import csv
 import json
 import os
-import shlex
+import re
 import signal
+import subprocess
 import sys
 import time
 
@@ -39,7 +40,7 @@ import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import indentcurves  # noqa: E402
-from indentfit import misfit, params as fparams, runs, stats  # noqa: E402
+from indentfit import dao, misfit, params as fparams, runs, stats  # noqa: E402
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 EX_STOPPED = 75
@@ -80,7 +81,10 @@ def parse_args(argv):
     ap.add_argument("--param", action="append", default=[], help="NAME=OPTION[,OPTION...]:LOW:HIGH[:log]")
     ap.add_argument("--weights", default="1,1", help="weights of the loading and the unloading (default 1,1)")
     ap.add_argument("--points", type=int, default=40, help="measured points per branch fitted (default 40)")
-    ap.add_argument("--start", default="sweep", help="'sweep' or the parameters' values V1,V2,...")
+    ap.add_argument("--start", default="sweep",
+                    help="'sweep', 'dao' (Dao et al.'s reverse analysis of the first curve, for parameters named E, "
+                         "yield and n of a sharp tip) or the parameters' values V1,V2,...")
+    ap.add_argument("--indent-op", help="indent-op, for --start dao (default: beside --indent)")
     ap.add_argument("--sweep-points", type=int, default=0, help="points of the starting sweep (default 2p+2)")
     ap.add_argument("--noise", default="residual",
                     help="the load noise for the intervals: 'residual' (the residuals' scatter) or uN")
@@ -199,11 +203,11 @@ class Fit:
                  f"[{time.time() - self.t0:.0f} s]")
 
     def fun(self, u):
-        futs = self.submit(u)
+        self.submit(u)
         if not self.args.no_speculate:
+            # the optimiser asks for the Jacobian at every point it accepts: queue its runs behind the point's own
             for v, _ in self.fd_points(u):
                 self.submit(v)
-        del futs
         return self.residual(u, "eval")
 
     def jac(self, u):
@@ -218,6 +222,8 @@ class Fit:
 
     def start(self):
         p = len(self.params)
+        if self.args.start == "dao":
+            return self.dao_start()
         if self.args.start != "sweep":
             try:
                 x = [float(v) for v in self.args.start.split(",")]
@@ -239,6 +245,44 @@ class Fit:
         if all(all(rec["returncode"] for rec in self.evals[tuple(np.round(u, 12))][1]) for u in pts):
             raise FitError(self.failed_line(pts[0]))
         return pts[best]
+
+    def dao_start(self):
+        """E from the first curve's Oliver-Pharr modulus, yield from Dao's Pi_1 and the middle of n's bounds."""
+        byname = {p.name.lower(): p for p in self.params}
+        if "e" not in byname or "yield" not in byname or set(byname) - {"e", "yield", "n"}:
+            raise FitError("--start dao needs parameters named E and yield (and n), and no others")
+        c = self.curves[0]
+        opt = byname["e"].options[0].rsplit("_", 1)[0]
+        model = c.model_text + " " + " ".join(self.args.extra)
+        nu = re.findall(rf"-{opt}_poisson\s+([0-9.eE+-]+)", model)
+        kind = re.findall(r"-indenter_type\s+(\w+)", model)
+        if not nu or not kind or kind[-1] not in ("cone", "berkovich"):
+            raise FitError(f"--start dao: the first curve's model must give -{opt}_poisson and a cone or berkovich "
+                           "-indenter_type")
+        nu = float(nu[-1])
+        b = c.branches
+        csv_path = os.path.join(self.args.out, "dao-curve.csv")
+        indentcurves.write_csv(csv_path, np.r_[b.load_h, b.unload_h], np.r_[b.load_p, b.unload_p])
+        op = self.args.indent_op or os.path.join(os.path.dirname(self.args.indent), "indent-op")
+        run = subprocess.run([op, "-op_file", csv_path, "-indenter_type", kind[-1], "-op_poisson", f"{nu}"],
+                             capture_output=True, text=True)
+        m = re.search(r"E_r ([0-9.eE+-]+) GPa", run.stdout)
+        if run.returncode or not m:
+            raise FitError(f"--start dao: indent-op could not analyse the first curve: {run.stderr.strip()}")
+        e_star = float(m.group(1))
+        C = dao.kick_constant(b.load_h, b.load_p, b.h_max) * 1e3  # uN/nm^2 = GPa / 1000
+        sr = dao.sigma_r(C, e_star)
+        if sr is None:
+            raise FitError(f"--start dao: no sigma_0.033 gives C = {C:.4g} GPa with E* = {e_star:.4g} GPa in Dao's "
+                           "Pi_1: use --start sweep")
+        E = e_star * (1 - nu * nu)
+        n = 0.5 * (byname["n"].low + byname["n"].high) if "n" in byname else 0.0
+        values = {"e": E, "yield": dao.yield_from(sr, E, n), "n": n}
+        self.say(f"fit: Dao's start from curve 1: E* {e_star:.4g} GPa (Oliver-Pharr), C {C:.4g} GPa, sigma_0.033 "
+                 f"{sr:.4g} GPa; E {E:.4g} GPa, yield {values['yield']:.4g} GPa"
+                 + (f" at n {n:.3g} (the middle of its bounds)" if "n" in byname else ""))
+        return np.array([min(max(p.scaled(min(max(values[p.name.lower()], p.low), p.high)), 0.0), 1.0)
+                         for p in self.params])
 
     def failed_line(self, u):
         rec = self.evals[tuple(np.round(u, 12))][1][0]
@@ -328,15 +372,21 @@ def plots(args, fit, sims):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     fig, ax = plt.subplots(figsize=(6.4, 4.8))
-    for c, sim in zip(fit.curves, sims):
-        b = c.branches
-        ax.plot(np.r_[b.load_h, b.unload_h], np.r_[b.load_p, b.unload_p], ".", ms=3, label=f"measured {c.index + 1}")
+    for k, (c, sim) in enumerate(zip(fit.curves, sims)):
+        b, color = c.branches, f"C{k}"
+        label = f"{os.path.basename(c.path)} ({os.path.basename(c.model)})"
+        ax.plot(np.r_[b.load_h, b.unload_h], np.r_[b.load_p, b.unload_p], ".", ms=4, color=color,
+                label=f"measured: {label}")
         if sim is not None:
-            ax.plot(np.r_[sim.load_h, sim.unload_h[1:]], np.r_[sim.load_p, sim.unload_p[1:]], "-",
-                    label=f"fitted {c.index + 1}")
+            # drawn as the fit reads it: interpolated between the load steps as the residuals are
+            lh = np.linspace(0.0, sim.h_max, 200)
+            uh = np.linspace(sim.h_max, sim.unload_h.min(), 100)
+            ax.plot(np.r_[lh, uh], np.r_[misfit.simulated_load(sim, lh, "loading"),
+                                         misfit.simulated_load(sim, uh, "unloading")], "-", color=color,
+                    label="fitted")
     ax.set_xlabel("depth (nm)")
     ax.set_ylabel("load (uN)")
-    ax.legend()
+    ax.legend(fontsize="small")
     fig.tight_layout()
     fig.savefig(os.path.join(args.out, "fit.png"), dpi=120)
     plt.close(fig)

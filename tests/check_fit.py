@@ -13,6 +13,7 @@ import csv
 import glob
 import json
 import os
+import re
 import shutil
 import signal
 import subprocess
@@ -22,7 +23,7 @@ import time
 import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "scripts"))
-from indentfit import misfit  # noqa: E402
+from indentfit import dao, misfit  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(HERE)
@@ -155,6 +156,22 @@ def roundtrip(args, work):
     for k, v in res["parameters"].items():
         if not v["ci95"] > 0:
             raise SystemExit(f"FAIL: no confidence interval for {k}")
+    # Dao's start from the cone curve: E from its unloading, yield on the valley of its sigma_0.033
+    out = os.path.join(work, "fit_dao_start")
+    shutil.rmtree(out, ignore_errors=True)
+    rc, text = fit(args, out, curves, params, more=["--start", "dao", "--max-evals", "1"])
+    m = re.search(r"Dao's start from curve 1: E\* ([0-9.]+) GPa \(Oliver-Pharr\), C ([0-9.]+) GPa, sigma_0.033 "
+                  r"([0-9.]+) GPa; E ([0-9.]+) GPa", text)
+    if not m:
+        raise SystemExit("FAIL: no line on Dao's start")
+    e_star, C, sr, E = (float(g) for g in m.groups())
+    sr_true = truth[1] * (1 + truth[0] * 0.033 / truth[1]) ** truth[2]
+    print(f"Dao's start: E* {e_star:.4g} (truth {truth[0] / 0.91:.4g}), C {C:.4g}, sigma_0.033 {sr:.4g} (truth "
+          f"{sr_true:.4g}), E {E:.4g} (truth {truth[0]:g})")
+    # what the start must hold: Dao's Pi_1 at the printed E* and C, and E from E* with the model's nu (0.3).
+    # How near the truth it lands depends on Oliver-Pharr's E* for this model's unloading (doc/inverse.md).
+    if abs(C / sr / dao.pi1(e_star / sr) - 1) > 1e-3 or abs(E / (e_star * 0.91) - 1) > 1e-3:
+        raise SystemExit("FAIL: Dao's start does not satisfy Pi_1 or E = E* (1 - nu^2)")
 
 
 def mystical(args, work):

@@ -7,7 +7,7 @@ import unittest
 import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "scripts"))
-from indentfit import misfit, params, runs, stats  # noqa: E402
+from indentfit import dao, misfit, params, runs, stats  # noqa: E402
 
 
 class Params(unittest.TestCase):
@@ -105,6 +105,27 @@ class Stats(unittest.TestCase):
         res = stats.analyse(np.column_stack([c, 2 * c]), r, p, [0.5, 0.5])
         self.assertFalse(res["distinguishable"])
         self.assertIn("without limit", "\n".join(stats.verdict_lines(res, p)))
+
+
+class Dao(unittest.TestCase):
+    def test_pi1_gives_daos_kick_constant(self):
+        # Dao et al.'s own example of elastic-perfectly plastic aluminium: E 70 GPa, nu 0.3, yield 0.3 GPa,
+        # C = 25.8 GPa (the value kick_cone_finite_dao_np2 checks indent against)
+        e_star = 70 / (1 - 0.3 ** 2)
+        self.assertAlmostEqual(0.3 * dao.pi1(e_star / 0.3), 25.8, delta=0.05)
+        self.assertAlmostEqual(dao.sigma_r(0.3 * dao.pi1(e_star / 0.3), e_star), 0.3, places=9)
+        self.assertIsNone(dao.sigma_r(1e-6, e_star))
+
+    def test_yield_from_representative_stress(self):
+        for sy, n in ((0.25, 0.2), (0.1, 0.45), (1.0, 0.0)):
+            sr = sy * (1 + 70 * dao.EPS_R / sy) ** n
+            self.assertAlmostEqual(dao.yield_from(sr, 70, n), sy, places=9)
+
+    def test_kick_constant(self):
+        h = np.linspace(1, 60, 30)
+        p = 0.0258 * h ** 2
+        p[h < 0.2 * 60] *= 3  # the tip's rounding: left out
+        self.assertAlmostEqual(dao.kick_constant(h, p, 60.0), 0.0258, places=12)
 
 
 class Cache(unittest.TestCase):

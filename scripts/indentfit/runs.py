@@ -1,7 +1,7 @@
-"""Forward runs of indent for a fit: each kept in a directory named by a hash of everything that decides its
-curve (the model file's text and the options), so that a fit run again, or continued after an interruption,
-reruns nothing that finished; run K at a time, each on R ranks, through a launcher (mpiexec here, srun inside
-a Slurm allocation).
+"""Forward runs of indent for a fit, each kept in a directory named by a hash of everything that decides its
+curve (the model file's text and the options). A fit run again, or continued after an interruption, reruns
+nothing that finished, and a run stopped with a checkpoint continues from it. K runs go at once, each on R
+ranks, through a launcher (mpiexec here, srun inside a Slurm allocation).
 """
 import concurrent.futures
 import hashlib
@@ -45,10 +45,23 @@ class Runner:
         self.stopping = False
         self.counts = {"run": 0, "cached": 0, "failed": 0, "seconds": 0.0}
 
-    def command(self, model, options, outdir):
+    def command(self, model, options, outdir, resume):
         launch = [a.replace("{np}", str(self.np)) for a in shlex.split(self.launcher)]
         return launch + [self.indent, "-options_file", model] + options + [
-            "-output_dir", outdir, "-output_overwrite", "-output_fields", "0", "-quiet"]
+            "-output_dir", outdir, "-output_fields", "0", "-quiet"] + (
+            ["-restart", outdir] if resume else ["-output_overwrite"])
+
+    def _launch(self, cmd, d):
+        with open(os.path.join(d, LOG), "a") as log:
+            log.write(" ".join(shlex.quote(c) for c in cmd) + "\n")
+            log.flush()
+            proc = subprocess.Popen(cmd, stdout=log, stderr=subprocess.STDOUT, start_new_session=True)
+            with self.lock:
+                self.procs.add(proc)
+            rc = proc.wait()
+            with self.lock:
+                self.procs.discard(proc)
+        return rc
 
     def submit(self, model, model_text, options):
         key = run_key(model_text, options)
@@ -78,17 +91,13 @@ class Runner:
         if self.stopping:
             raise Stopped()
         os.makedirs(d, exist_ok=True)
-        cmd = self.command(model, options, d)
         t0 = time.time()
-        with open(os.path.join(d, LOG), "w") as log:
-            log.write(" ".join(shlex.quote(c) for c in cmd) + "\n")
-            log.flush()
-            proc = subprocess.Popen(cmd, stdout=log, stderr=subprocess.STDOUT, start_new_session=True)
-            with self.lock:
-                self.procs.add(proc)
-            rc = proc.wait()
-            with self.lock:
-                self.procs.discard(proc)
+        # a run the fit's interruption stopped with a checkpoint continues from it; should that fail (a checkpoint
+        # of another indent, say), the run starts afresh
+        resume = os.path.isfile(os.path.join(d, "checkpoint.h5"))
+        rc = self._launch(self.command(model, options, d, resume), d)
+        if resume and rc and rc not in INTERRUPTED and not self.stopping:
+            rc = self._launch(self.command(model, options, d, False), d)
         seconds = time.time() - t0
         if self.stopping or rc in INTERRUPTED:
             raise Stopped()
