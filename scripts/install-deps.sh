@@ -7,7 +7,7 @@ packages=(
   build-essential cmake pkg-config git time
   petsc-dev libhdf5-openmpi-dev openmpi-bin libopenmpi-dev libmetis-dev
   libopenblas0-serial gmsh
-  python3 python3-numpy python3-h5py python3-matplotlib python3-meshio python3-xlrd
+  python3 python3-numpy python3-scipy python3-h5py python3-matplotlib python3-meshio python3-xlrd
 )
 
 missing=()
