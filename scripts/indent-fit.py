@@ -305,13 +305,8 @@ def noise_sigma(args, fit):
         raise FitError(f"--noise {args.noise}: 'residual' or a load in uN") from None
     if s <= 0:
         raise FitError(f"--noise {args.noise}: must be positive")
-    out = []
-    for c in fit.curves:
-        b = c.branches
-        for h, w in ((b.load_h, fit.w[0]), (b.unload_h, fit.w[1])):
-            if w:
-                out.append(np.full(len(h), w * s / (b.p_max * np.sqrt(len(h)))))
-    return np.concatenate(out)
+    return np.concatenate([np.full(len(h), s * scale) for c in fit.curves
+                           for _, h, _, scale in misfit.fitted_branches(c.branches, *fit.w)])
 
 
 def write_outputs(args, fit, sol, res):

@@ -9,7 +9,6 @@ mystical: materials A and B (MATERIAL_A, MATERIAL_B) have nearly the same cone c
   B's cone and sphere curves together that they determine both (and find B's n).
 """
 import argparse
-import csv
 import glob
 import json
 import os
@@ -23,6 +22,8 @@ import time
 import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "scripts"))
+import indentcurves  # noqa: E402
+import runfiles  # noqa: E402
 from indentfit import dao, misfit  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -50,16 +51,13 @@ def param(name, opt, lo, hi, log=False):
 def forward(args, model, opts, out):
     subprocess.run(args.launch + [args.indent, "-options_file", f"inputs/fit-{model}.opts"] + MESH + opts +
                    ["-output_dir", out, "-output_overwrite", "-output_fields", "0", "-quiet"], cwd=REPO, check=True)
-    rows = list(csv.DictReader(open(os.path.join(out, "load_displacement.csv"))))
-    return np.array([float(r["depth_nm"]) for r in rows]), np.array([float(r["load_uN"]) for r in rows])
+    c = runfiles.read_curve(os.path.join(out, "load_displacement.csv"))
+    return c["depth_nm"], c["load_uN"]
 
 
 def write_curve(path, h, p, noise, seed):
-    rng = np.random.default_rng(seed)
-    with open(path, "w") as f:
-        f.write("depth_nm,load_uN\n")
-        for a, b in zip(h, p * (1 + noise * rng.standard_normal(len(p)))):
-            f.write(f"{a:.10g},{b:.10g}\n")
+    """The curve with Gaussian noise of relative size `noise` on each load."""
+    indentcurves.write_csv(path, h, p * (1 + noise * np.random.default_rng(seed).standard_normal(len(p))))
 
 
 def fit(args, out, curves, params, extra=(), timeout=None, check=True, more=()):

@@ -5,9 +5,9 @@ P_max, over the square root of the branch's point count and times the branch's w
 by its weight whatever its sampling, and sqrt(sum r^2 / sum w^2) is the weighted RMS load error as a
 fraction of P_max.
 """
-import csv
-
 import numpy as np
+
+import runfiles
 
 
 class Branches:
@@ -21,12 +21,13 @@ class Branches:
         self.h_max = float(self.unload_h[0]) if len(self.unload_h) else float(self.load_h.max())
 
 
-def _thin(h, p, points):
-    """At most `points` points of a branch, evenly spread in depth (the nearest measured point to each)."""
+def _thin(h, p, points, keep_first=False):
+    """At most `points` points of a branch, evenly spread in depth (the nearest measured point to each), and its
+    first point with keep_first."""
     if len(h) <= points:
         return h, p
-    targets = np.linspace(h.min(), h.max(), points)
-    idx = sorted({int(np.argmin(np.abs(h - t))) for t in targets})
+    idx = {int(np.argmin(np.abs(h - t))) for t in np.linspace(h.min(), h.max(), points)}
+    idx = sorted(idx | ({0} if keep_first else set()))
     return h[idx], p[idx]
 
 
@@ -41,10 +42,7 @@ def measured_branches(curve, points=40, name=""):
     lk = [i for i in range(la, lb + 1) if p[i] > 0 and h[i] > 0]
     uk = [i for i in range(ua, ub + 1) if p[i] > 0]
     lh, lp = _thin(h[lk], p[lk], points)
-    uh, up = h[uk], p[uk]
-    if len(uh) > points:
-        idx = sorted({int(np.argmin(np.abs(uh - t))) for t in np.linspace(uh.min(), uh.max(), points)} | {0})
-        uh, up = uh[idx], up[idx]
+    uh, up = _thin(h[uk], p[uk], points, keep_first=True)
     if len(lh) < 3 or len(uh) < 3:
         raise ValueError(f"{name or curve.get('path')}: fewer than 3 points on the loading or the unloading")
     return Branches(lh, lp, uh, up, name)
@@ -53,12 +51,8 @@ def measured_branches(curve, points=40, name=""):
 def read_indent_curve(path):
     """indent's load_displacement.csv -> Branches (the loading from the origin up to the deepest step, then the
     unloading)."""
-    depth, load = [0.0], [0.0]
-    with open(path, newline="") as f:
-        for row in csv.DictReader(f):
-            depth.append(float(row["depth_nm"]))
-            load.append(float(row["load_uN"]))
-    depth, load = np.array(depth), np.array(load)
+    c = runfiles.read_curve(path)
+    depth, load = np.r_[0.0, c["depth_nm"]], np.r_[0.0, c["load_uN"]]
     top = int(np.argmax(depth))
     return Branches(depth[:top + 1], load[:top + 1], depth[top:], load[top:])
 
@@ -78,17 +72,18 @@ def simulated_load(sim, h, branch):
     return np.interp(h, uh, up, left=below) ** 1.5
 
 
+def fitted_branches(meas, w_load=1.0, w_unload=1.0):
+    """(branch, depths, loads, scale) of each fitted branch: a load difference times scale is its residual."""
+    return [(branch, h, p, w / (meas.p_max * np.sqrt(len(p))))
+            for branch, h, p, w in (("loading", meas.load_h, meas.load_p, w_load),
+                                    ("unloading", meas.unload_h, meas.unload_p, w_unload)) if w != 0]
+
+
 def residuals(meas, sim, w_load=1.0, w_unload=1.0):
     """The residual vector of one curve (loading then unloading); sim None (a failed run) gives the
     residuals of a zero load, the largest misfit a curve can have within reason."""
-    out = []
-    for branch, h, p, w in (("loading", meas.load_h, meas.load_p, w_load),
-                            ("unloading", meas.unload_h, meas.unload_p, w_unload)):
-        if w == 0:
-            continue
-        ps = np.zeros_like(p) if sim is None else simulated_load(sim, h, branch)
-        out.append(w * (ps - p) / (meas.p_max * np.sqrt(len(p))))
-    return np.concatenate(out)
+    return np.concatenate([scale * ((np.zeros_like(p) if sim is None else simulated_load(sim, h, branch)) - p)
+                           for branch, h, p, scale in fitted_branches(meas, w_load, w_unload)])
 
 
 def rms(r, weights_squared):
