@@ -2,8 +2,11 @@
 """Compare two indent HDF5 files field by field, independent of the rank count that wrote them.
 
 Vertices are matched by coordinates and cells by centroids, so files written on different numbers of
-ranks (different vertex orders) compare exactly. A field passes where |a - b| <= atol + rtol |b|
-everywhere (b: the reference). Exit status 0 when every field passes, 1 otherwise, 2 on bad input.
+ranks (different vertex orders) compare exactly. Steps are matched by their accepted step (/fields/step;
+a file without it has every step): each of the run's steps must be one of the reference's, and both
+must end on the same step (a reference may hold more, e.g. one written with -output_fields_every 1).
+A field passes where |a - b| <= atol + rtol |b| everywhere (b: the reference). Exit status 0 when every
+field passes, 1 otherwise, 2 on bad input.
 
   h5compare.py RUN.h5 REFERENCE.h5 [--field NAME:ATOL:RTOL ...] [--step N]
 """
@@ -41,6 +44,14 @@ def load(path):
     return f
 
 
+def field_steps(f):
+    """The accepted step of each output step: /fields/step, or 1, 2, ... in a file written before it."""
+    n = f["fields/displacement"].shape[0] if "fields/displacement" in f else 0
+    if "fields/step" not in f:
+        return np.arange(1, n + 1)
+    return f["fields/step"][:].reshape(-1).astype(np.int64)
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("run")
@@ -70,7 +81,12 @@ def main():
         print("FAIL mesh: cell centroids do not match")
         return 1
 
-    specs = args.field or [f"{name}:1e-10:1e-8" for name in b["fields"].keys()]
+    sa, sb = field_steps(a), field_steps(b)
+    where = {int(k): i for i, k in enumerate(sb)}
+    if any(int(k) not in where for k in sa) or (len(sa) and len(sb) and sa[-1] != sb[-1]):
+        print(f"FAIL steps: the run's field steps {list(sa)} are not among the reference's {list(sb)} with the same last")
+        return 1
+    specs = args.field or [f"{name}:1e-10:1e-8" for name in b["fields"].keys() if name != "step"]
     failed = 0
     for spec in specs:
         try:
@@ -83,19 +99,19 @@ def main():
             failed += 1
             continue
         fa, fb = a[f"fields/{name}"][:], b[f"fields/{name}"][:]
-        if fa.shape != fb.shape:
-            print(f"FAIL {name}: shape {fa.shape} vs {fb.shape} in the reference")
+        if fa.shape[0] != len(sa) or fb.shape[0] != len(sb) or fa.shape[1:] != fb.shape[1:]:
+            print(f"FAIL {name}: shape {fa.shape} vs {fb.shape} in the reference (field steps {len(sa)}, {len(sb)})")
             failed += 1
             continue
         steps = range(fa.shape[0]) if args.step is None else [args.step]
         for s in steps:
             pa, pb = (va, vb) if name in VERTEX_FIELDS else (oa, ob)
-            da, db = fa[s][pa], fb[s][pb]
+            da, db = fa[s][pa], fb[where[int(sa[s])]][pb]
             err = np.abs(da - db)
             bad = err > atol + rtol * np.abs(db)
             rel = err.max() / max(np.abs(db).max(), 1e-300)
             status = "FAIL" if bad.any() else "ok"
-            print(f"{status} {name} step {s}: max abs diff {err.max():.3e}, relative to max {rel:.3e} (atol {atol:g}, rtol {rtol:g})")
+            print(f"{status} {name} step {int(sa[s])}: max abs diff {err.max():.3e}, relative to max {rel:.3e} (atol {atol:g}, rtol {rtol:g})")
             failed += bool(bad.any())
     return 1 if failed else 0
 

@@ -27,7 +27,8 @@ matplotlib.use("Agg")  # files only, never a window: the script also runs on mac
 import matplotlib.pyplot as plt  # noqa: E402  (must come after the backend is chosen)
 from matplotlib import colors, ticker, tri as mtri  # noqa: E402
 
-from runfiles import CELL_FACES, InputError, mirror, plane_faces, read_curve, read_scratch  # noqa: E402  (this script's folder)
+from runfiles import (CELL_FACES, InputError, curve_rows, field_steps, mirror, plane_faces,  # noqa: E402
+                      read_curve, read_scratch)  # (this script's folder)
 
 CSV_NAME = "load_displacement.csv"
 H5_NAME = "indent.h5"
@@ -60,6 +61,8 @@ class Run:
         self.lo, self.hi = lo, hi
         self.z_top = hi[2]
         self.nsteps = self.dataset("fields/displacement").shape[0]
+        self.steps = field_steps(self.h5, path)  # the accepted step of each written one
+        self.rows = None  # the curve's row of each written step, set by load_inputs
         # A symmetry plane x = 0 or y = 0 is a boundary of the model with the body on its positive side.
         self.mirror_axes = [a for a in (0, 1) if abs(lo[a]) <= self.tol and hi[a] > self.tol]
 
@@ -203,7 +206,7 @@ def imprint(run, curve, out):
     height = run.x[verts, 2] + run.field("displacement", run.nsteps - 1)[verts, 2] - run.z_top
     write_imprint(os.path.join(out, "imprint.csv"), xy, height)
     load = curve["load_uN"]
-    contact = run.optional_field("contact_status", int(np.argmax(load)))
+    contact = run.optional_field("contact_status", peak_step(run, curve))
     # Only a run unloaded until the indenter left shows a residual imprint; otherwise the picture
     # is the surface under the last load, and the title must not claim otherwise.
     what = "residual imprint" if load[-1] <= 1e-9 * load.max() else f"surface under P = {load[-1]:.4g} uN"
@@ -315,9 +318,15 @@ def draw_slice(ax, fig, section, window, values, label, unit, title):
     fig.colorbar(im, ax=ax, label=f"{label} ({unit or '-'})", shrink=0.9, extend="max")
 
 
+def peak_step(run, curve):
+    """The written step with the largest load (the end of loading, which is always written, in depth control)."""
+    return int(np.argmax(curve["load_uN"][run.rows]))
+
+
 def plot_stress_slice(run, curve, path):
-    depth, load = curve["depth_nm"], curve["load_uN"]
-    peak, last = int(np.argmax(load)), run.nsteps - 1
+    # the fields' steps, with the depth and load of their own rows of the curve
+    depth, load = curve["depth_nm"][run.rows], curve["load_uN"][run.rows]
+    peak, last = peak_step(run, curve), run.nsteps - 1
     # 3 contact radii cover the plastic zone and the stress bulb under it; the film of the paper
     # (300 nm under a 60 nm indent with a ~160 nm contact radius) fits with some substrate.
     reach = 3.0 * contact_radius(curve, peak)
@@ -347,11 +356,12 @@ def load_inputs(run_dir):
         raise InputError(f"{run_dir}: no such run directory")
     curve = read_curve(os.path.join(run_dir, CSV_NAME))
     run = Run(os.path.join(run_dir, H5_NAME))
-    rows = len(curve["depth_nm"])
-    if run.nsteps != rows:
-        raise InputError(f"{run.path} has {run.nsteps} steps but {CSV_NAME} has {rows} rows (a run still being written?)")
+    run.rows = curve_rows(curve, run.steps, run.path)
+    if run.rows[-1] != len(curve["depth_nm"]) - 1:
+        raise InputError(f"{run.path}: its last fields are of step {run.steps[-1]}, the curve goes on to row "
+                         f"{len(curve['depth_nm'])} (a run still being written?)")
     for name in ("von_mises", "plastic_strain"):
-        if run.dataset(f"fields/{name}").shape[0] != rows:
+        if run.dataset(f"fields/{name}").shape[0] != run.nsteps:
             raise InputError(f"{run.path}: /fields/{name} and /fields/displacement have different step counts")
     path = os.path.join(run_dir, SCRATCH_NAME)
     scratch = read_scratch(path, SCRATCH_COLUMNS) if os.path.exists(path) else None

@@ -1,7 +1,7 @@
 """Shared by the scripts that read an indent run's files (plot-indent.py, export-curves.py,
 groove-profile.py): the cells' faces, the input error they report in one line, the triangulation of a
 plane of the mesh with its mirror images (half and quarter models), the deformed top surface of the last
-step, and the scratch test's table."""
+step, the curve's rows of the steps whose fields were written, and the scratch test's table."""
 import csv
 import os
 
@@ -133,3 +133,27 @@ def read_curve(path, need=("depth_nm", "load_uN")):
         return {c: np.array([float(r[c]) for r in rows]) for c in rows[0]}
     except (TypeError, ValueError) as e:
         raise InputError(f"{path}: unreadable number ({e})") from None
+
+
+def field_steps(h5, path):
+    """The accepted step of each step in /fields (-output_fields_every writes only some): /fields/step, or
+    1, 2, ... for a file written before it existed, when every step was written."""
+    n = dataset(h5, "fields/displacement", path).shape[0]
+    if "fields/step" not in h5:
+        return np.arange(1, n + 1)
+    steps = h5["fields/step"][:].reshape(-1).astype(np.int64)
+    if len(steps) != n:
+        raise InputError(f"{path}: /fields/step has {len(steps)} entries for {n} steps of fields")
+    return steps
+
+
+def curve_rows(curve, steps, path):
+    """The rows of the curve (its step column) holding each written field step; InputError when one is
+    missing, as in a run still being written."""
+    where = {int(s): i for i, s in enumerate(curve["step"])} if "step" in curve else \
+        {i + 1: i for i in range(len(curve["load_uN"]))}
+    missing = [int(s) for s in steps if int(s) not in where]
+    if missing:
+        raise InputError(f"{path}: fields of step {missing[0]}, which the curve does not have (a run still being "
+                         "written?)")
+    return np.array([where[int(s)] for s in steps], dtype=np.int64)

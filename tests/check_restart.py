@@ -43,7 +43,8 @@ def curve(d):
 def last_fields(d):
     """Every field's last step, rows ordered by vertex coordinates or cell centroid (rank-independent)."""
     with h5py.File(os.path.join(d, "indent.h5"), "r") as f:
-        order = {f["geometry/vertices"].shape[0]: np.lexsort(f["geometry/vertices"][()].T[::-1]),
+        order = {1: np.arange(1),  # /fields/step: one value per step
+                 f["geometry/vertices"].shape[0]: np.lexsort(f["geometry/vertices"][()].T[::-1]),
                  f["topology/cell_centroids"].shape[0]: np.lexsort(f["topology/cell_centroids"][()].T[::-1])}
         return {k: f["fields"][k][-1][order[f["fields"][k].shape[1]]] for k in f["fields"]}, \
             {k: f["fields"][k].shape[0] for k in f["fields"]}

@@ -104,7 +104,7 @@ def mindlin_step(row, start, pos, status, mu, estar, radius, cell):
 def check_mindlin(s, run, mu, estar, radius, cell):
     fields = step_fields(run)
     if len(fields) != len(s):
-        print(f"FAIL: {len(fields)} output steps for {len(s)} accepted steps")
+        print(f"FAIL: {len(fields)} output steps for {len(s)} accepted steps (the check needs -output_fields_every 1)")
         return 1
     start = fields[np.flatnonzero(s["distance_nm"] == 0)[-1]][0]
     print(f"{'slid nm':>8} {'P uN':>9} {'Q uN':>9} {'Q/(mu P)':>8} {'Hertz a':>8} {'Mindlin c':>9} {'stick c':>9} "

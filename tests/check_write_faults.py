@@ -71,14 +71,15 @@ def main():
     if not indentrun.run(args, 2, options + ["-checkpoint_every", "2"], ref, "the uninterrupted run"):
         return 1
 
-    # fields: the limit stops indent.h5 after a few steps; the checkpoint of that step is written
+    # fields (of every step): the limit stops indent.h5 after a few steps; the checkpoint of that step is written
+    every = ["-output_fields_every", "1"]
     for nranks in (1, 2):
         out = os.path.join(args.workdir, f"fields_np{nranks}")
-        fault(f"fields, {nranks} rank(s)", nranks, 1000, options + ["-checkpoint_every", "2"], out, "indent.h5",
+        fault(f"fields, {nranks} rank(s)", nranks, 1000, options + every + ["-checkpoint_every", "2"], out, "indent.h5",
               r"\d+", r"the checkpoint of step \d+ is written: make room and continue with the same options and "
               + re.escape(f"-restart {out}"))
     out = os.path.join(args.workdir, "fields_np2")
-    status, lines = indentrun.run_quiet(args.mpiexec, 2, args.indent, options +
+    status, lines = indentrun.run_quiet(args.mpiexec, 2, args.indent, options + every +
                                         ["-checkpoint_every", "2", "-output_dir", out, "-restart", out])
     check(status == 0, f"restart without the limit: exit status {status}")
     if status == 0:

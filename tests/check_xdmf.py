@@ -140,6 +140,11 @@ def check(path):
 
     f, cells = dataset(steps[0]["topology"][1])
     _, vertices = dataset(steps[0]["geometry"])
+    if "fields/step" in f:  # the file's own record of which accepted step each output step is
+        saved = [int(v) for v in f["fields/step"][:].reshape(-1)]
+        listed = [int(s["info"]["step"]) for s in steps]
+        if saved != listed:
+            raise XdmfError(f"/fields/step {saved} differs from the index's steps {listed}")
     X, C = vertices[()], cells[()]
     expected = {4: "Tetrahedron", 8: "Hexahedron"}.get(C.shape[1])
     if steps[0]["topology"][0] != expected:

@@ -241,9 +241,10 @@ bad_np2(bad_indenter_starts_inside_np2 ${EXPECT_ERROR} --fresh ${BAD_DIR}/inside
 # -output_size_warning (or the free disk) is announced with its estimate, and the run goes on.
 bad_np2(bad_steps_beyond_field_file_np2 ${EXPECT_ERROR} --fresh ${BAD_DIR}/steps_beyond
   "The load program has more than 100000 steps to write and indent.h5 holds at most 100000"
-  ${INDENT_NP2} ${PAPER_COARSE} -load_steps 100000 -output_fields 1 -output_dir ${BAD_DIR}/steps_beyond)
+  ${INDENT_NP2} ${PAPER_COARSE} -load_steps 100000 -output_fields 1 -output_fields_every 1
+  -output_dir ${BAD_DIR}/steps_beyond)
 add_test(NAME output_size_warning COMMAND ${INDENT} -dm_plex_box_faces 2,2,2 -quiet ${ELASTIC} ${SPHERE} -load_steps 20
-  -output_size_warning 1e-5 -output_dir ${BAD_DIR}/size_warning -output_overwrite)
+  -output_size_warning 1e-6 -output_dir ${BAD_DIR}/size_warning -output_overwrite)
 set_tests_properties(output_size_warning PROPERTIES ENVIRONMENT "${INDENT_TEST_ENV}" LABELS "input;faults"
   PASS_REGULAR_EXPRESSION "indent: warning: the field output would take about [0-9.e+-]+ GB \\(up to [0-9]+ steps")
 indent_script_test(bad_depth_through_box ${EXPECT_ERROR}

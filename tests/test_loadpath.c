@@ -1,5 +1,5 @@
-static const char help[] = "Unit test of the adaptive load stepping: exact end point, cutback, growth, and the "
-  "errors.\n";
+static const char help[] = "Unit test of the adaptive load stepping: exact end point, cutback, growth, the "
+  "errors, and the steps whose fields are written.\n";
 
 #include "ind_loadpath.h"
 
@@ -129,6 +129,35 @@ int main(int argc, char **argv)
     }
     EXPECT(n == 9, "load-scratch-unload took %" PetscInt_FMT " steps, not 9", n);
   }
+  PetscCall(PetscOptionsClearValue(NULL, "-load_steps"));
+  /* Field steps (-output_fields_every 3) of 4 load, 2 hold and 4 unload steps: every third, the ends of the
+     loading (4) and of the hold (6), and the last (10); StepsLeft counts them before the first step. */
+  PetscCall(PetscOptionsSetValue(NULL, "-load_steps", "4"));
+  PetscCall(PetscOptionsSetValue(NULL, "-load_hold", "0.5"));
+  PetscCall(IndLoadPathSetFromOptions(PETSC_COMM_SELF, PETSC_TRUE, &lp));
+  {
+    const PetscInt expect[] = {3, 4, 6, 9, 10};
+    PetscInt       k        = 0;
+    EXPECT(IndLoadPathStepsLeft(&lp, 3, 100) == 5 && IndLoadPathStepsLeft(&lp, 1, 100) == 10 &&
+             IndLoadPathStepsLeft(&lp, 3, 2) == 2, "steps left: %" PetscInt_FMT " field steps of %" PetscInt_FMT,
+           IndLoadPathStepsLeft(&lp, 3, 100), IndLoadPathStepsLeft(&lp, 1, 100));
+    while (!IndLoadPathDone(&lp)) {
+      IndLoadPathAccept(&lp, 10);
+      EXPECT(IndLoadPathFieldStep(&lp, 1), "every = 1 writes step %" PetscInt_FMT, lp.accepted);
+      if (IndLoadPathFieldStep(&lp, 3)) {
+        EXPECT(k < 5 && lp.accepted == expect[k], "field step %" PetscInt_FMT " is not expected", lp.accepted);
+        k++;
+      }
+    }
+    EXPECT(k == 5, "%" PetscInt_FMT " field steps, not 5", k);
+  }
+  /* The indenter leaving the surface ends the unloading early: that step is the last, so it is written. */
+  PetscCall(IndLoadPathSetFromOptions(PETSC_COMM_SELF, PETSC_TRUE, &lp));
+  for (n = 0; n < 7; ++n) IndLoadPathAccept(&lp, 10);
+  EXPECT(!IndLoadPathFieldStep(&lp, 5) && !IndLoadPathAtSegmentEnd(&lp), "step 7 (unloading) is no field step");
+  IndLoadPathFinish(&lp);
+  EXPECT(IndLoadPathFieldStep(&lp, 5) && IndLoadPathAtSegmentEnd(&lp), "a finished program's last step is written");
+  PetscCall(PetscOptionsClearValue(NULL, "-load_hold"));
   PetscCall(PetscOptionsClearValue(NULL, "-load_steps"));
   PetscCall(PetscPrintf(PETSC_COMM_SELF, "load path: end point, cutback, growth, cap and error paths behave\n"));
   PetscCall(PetscFinalize());

@@ -3,7 +3,8 @@
    /geometry/vertices and /topology/cells once, then per output step /fields/displacement (vertices),
    /fields/stress, /fields/strain, /fields/von_mises, /fields/plastic_strain, /fields/back_stress,
    /fields/yielding (cell averages), and with an indenter /fields/contact_pressure and
-   /fields/contact_status (vertices). Provenance as attributes of "/". */
+   /fields/contact_status (vertices); /fields/step holds the accepted step of each output step.
+   Provenance as attributes of "/". */
 #include "ind_warnings.h"
 #include <petscviewerhdf5.h>
 #include "ind_mesh.h"
@@ -46,6 +47,9 @@ const char    *IndOutputGetDir(IndOutput out);
 const char    *IndOutputGetFieldFile(IndOutput out);
 PetscBool      IndOutputFieldsEnabled(IndOutput out);
 PetscBool      IndOutputCurveEnabled(IndOutput out);
+/* -output_fields_every N: a load program writes the fields of every N-th accepted step, of each segment's end
+   and of its last step (IndLoadPathFieldStep); 1: every step. */
+PetscInt       IndOutputFieldsEvery(IndOutput out);
 /* Its part of the state (ind_state.h): the output steps written so far, their times and values. */
 PetscErrorCode IndOutputState(void *output, IndStateFile file);
 PetscErrorCode IndOutputResume(IndOutput out, PetscInt npts, const IndCurvePoint *pts);

@@ -30,6 +30,7 @@ typedef struct {
   IndContactSummary   contact;
   char                why[256];
   PetscLogDouble      seconds;
+  PetscBool           fields; /* accepted, and its fields are written (-output_fields_every) */
 } IndStepResult;
 
 typedef struct _p_IndApp *IndApp;

@@ -49,9 +49,16 @@ PetscBool      IndLoadPathScratching(const IndLoadPath *path, PetscReal t);
 /* Ends the program now (the indenter has left the surface during unloading). */
 void           IndLoadPathFinish(IndLoadPath *path);
 PetscBool      IndLoadPathDone(const IndLoadPath *path);
+/* Whether the last accepted step ended a segment of the program: the loading (the largest depth, or load),
+   the hold, the scratch, or the unloading (also when IndLoadPathFinish ended it early). */
+PetscBool      IndLoadPathAtSegmentEnd(const IndLoadPath *path);
+/* Whether the fields of the step just accepted are written: with every = N, every N-th accepted step,
+   every segment's end (IndLoadPathAtSegmentEnd) and the program's last step; every = 1 writes all. */
+PetscBool      IndLoadPathFieldStep(const IndLoadPath *path, PetscInt every);
 /* The steps the program has left if none is cut back nor grows on an easy step (the loading's
-   increment is at its largest from the start by default): at most limit. */
-PetscInt       IndLoadPathStepsLeft(const IndLoadPath *path, PetscInt limit);
+   increment is at its largest from the start by default), counting only the field steps of
+   IndLoadPathFieldStep(every) (every = 1: all steps): at most limit. */
+PetscInt       IndLoadPathStepsLeft(const IndLoadPath *path, PetscInt every, PetscInt limit);
 /* The load factor the next attempt should reach. */
 PetscReal      IndLoadPathTarget(const IndLoadPath *path);
 void           IndLoadPathAccept(IndLoadPath *path, PetscInt newton_its);

@@ -22,7 +22,8 @@
 INDENT_REPO=${INDENT_REPO:-${PBS_O_WORKDIR:-$PWD}}
 RUN_DIR=$INDENT_REPO
 INDENT_EXE=${INDENT_EXE:-$INDENT_REPO/build/indent}
-# Relative to RUN_DIR; a scratch file system is better for the fields (1.5 GB at h_tip 4).
+# Relative to RUN_DIR; a scratch file system is better for the fields (223 MB at h_tip 4,
+# 1.56 GB with -output_fields_every 1).
 OUTPUT_DIR=${INDENT_OUTPUT_DIR:-output/berkovich_h4}
 # indent writes a checkpoint every 10 accepted steps by default (-checkpoint_every N to change it).
 INDENT_OPTIONS=(-options_file inputs/berkovich.opts -mesh_geo_parameters "h_tip=4,h_far=250")

@@ -243,10 +243,13 @@ PetscErrorCode IndOutputCreate(IndMesh mesh, IndDisc disc, IndOutput *out)
   o->enabled = PETSC_TRUE;
   o->curve   = PETSC_TRUE;
   o->size_warning = 10;
+  o->every        = 10;
   PetscCall(PetscStrncpy(o->dir, "output", sizeof(o->dir)));
   PetscOptionsBegin(comm, NULL, IND_TITLE "Output files", "Output");
   PetscCall(PetscOptionsGetString(NULL, NULL, "-output_dir", o->dir, sizeof(o->dir), NULL)); /* listed by rundir.c */
   PetscCall(IndOptionsBool("-output_fields", "Write field output (HDF5 + XDMF)", o->enabled, &o->enabled, NULL));
+  PetscCall(IndOptionsInt("-output_fields_every", "Fields of every N-th accepted step, and always of each segment's "
+    "end (loading, hold, scratch) and of the last step; 1: every step", NULL, o->every, &o->every, NULL));
   PetscCall(IndOptionsBool("-output_curve", "Write the load-displacement curve (CSV) of an indentation", o->curve,
     &o->curve,
                            NULL));
@@ -255,6 +258,8 @@ PetscErrorCode IndOutputCreate(IndMesh mesh, IndDisc disc, IndOutput *out)
   PetscOptionsEnd();
   PetscCheck(o->size_warning >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-output_size_warning must be >= 0 (GB), got %g",
              (double)o->size_warning);
+  PetscCheck(o->every >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-output_fields_every must be >= 1, got %" PetscInt_FMT,
+             o->every);
   PetscCheck(o->dir[0], comm, PETSC_ERR_ARG_WRONG, "-output_dir must not be empty");
   PetscCall(PetscSNPrintf(o->h5name, sizeof(o->h5name), "%s/indent.h5", o->dir));
   if (o->enabled || o->curve) PetscCall(IndMakeDirectory(comm, o->dir, "-output_dir"));
@@ -277,6 +282,12 @@ PetscErrorCode IndOutputCreate(IndMesh mesh, IndDisc disc, IndOutput *out)
   PetscCall(PetscObjectSetName((PetscObject)o->plastic, "plastic_strain"));
   PetscCall(PetscObjectSetName((PetscObject)o->back, "back_stress"));
   PetscCall(PetscObjectSetName((PetscObject)o->yielding, "yielding"));
+  {
+    PetscMPIInt rank;
+    PetscCallMPI(MPI_Comm_rank(comm, &rank));
+    PetscCall(VecCreateMPI(comm, rank ? 0 : 1, 1, &o->stepnum));
+    PetscCall(PetscObjectSetName((PetscObject)o->stepnum, "step"));
+  }
   PetscCall(PetscMalloc1(IND_MAX_OUTPUT_STEPS, &o->times));
   PetscCall(PetscMalloc1(IND_OUTPUT_INFO * IND_MAX_OUTPUT_STEPS, &o->info));
   for (PetscInt i = 0; i < IND_OUTPUT_INFO * IND_MAX_OUTPUT_STEPS; ++i) o->info[i] = NAN;
@@ -438,6 +449,18 @@ PetscErrorCode IndOutputWriteStep(IndOutput o, PetscReal time, Vec U, IndAssembl
     PetscCall(IndOutputViewField(o, o->pressure, PETSC_FALSE));
     PetscCall(IndOutputViewField(o, o->status, PETSC_FALSE));
   }
+  /* Which accepted step each output step is (-1: not an accepted step of a load program), since not every
+     step is written: readers match fields to the curve's rows by it. */
+  {
+    const PetscReal step = o->info[IND_OUTPUT_INFO * o->nsteps];
+    PetscScalar    *a;
+    PetscInt        n;
+    PetscCall(VecGetLocalSize(o->stepnum, &n));
+    PetscCall(VecGetArray(o->stepnum, &a));
+    if (n) a[0] = o->info_set && !PetscIsNanReal(step) ? step : -1.0;
+    PetscCall(VecRestoreArray(o->stepnum, &a));
+    PetscCall(VecView(o->stepnum, o->viewer));
+  }
   PetscCall(PetscViewerHDF5PopGroup(o->viewer));
   PetscCall(PetscViewerFlush(o->viewer));
   PetscCall(WriteXdmf(o, time));
@@ -484,6 +507,7 @@ PetscErrorCode IndOutputDestroy(IndOutput *o)
   PetscCall(VecDestroy(&(*o)->plastic));
   PetscCall(VecDestroy(&(*o)->back));
   PetscCall(VecDestroy(&(*o)->yielding));
+  PetscCall(VecDestroy(&(*o)->stepnum));
   PetscCall(VecDestroy(&(*o)->Gc));
   PetscCall(VecDestroy(&(*o)->Cloc));
   PetscCall(VecDestroy(&(*o)->c3));
@@ -502,3 +526,4 @@ IND_GETTER(const char *, IndOutputGetDir, IndOutput, o->dir)
 IND_GETTER(const char *, IndOutputGetFieldFile, IndOutput, o->h5name)
 IND_GETTER(PetscBool, IndOutputFieldsEnabled, IndOutput, o->enabled)
 IND_GETTER(PetscBool, IndOutputCurveEnabled, IndOutput, o->curve)
+IND_GETTER(PetscInt, IndOutputFieldsEvery, IndOutput, o->every)

@@ -11,6 +11,7 @@ struct _p_IndOutput {
   const IndDiscLayout *layout;  /* the discretisation's */
   PetscBool   enabled;
   PetscBool   curve;   /* -output_curve */
+  PetscInt    every;   /* -output_fields_every: the caller writes every N-th step's fields (and others) */
   PetscReal   size_warning; /* -output_size_warning, GB: field output expected beyond it is announced */
   FILE       *csv;     /* rank 0, opened at the first point */
   char        dir[PETSC_MAX_PATH_LEN];
@@ -18,6 +19,7 @@ struct _p_IndOutput {
   PetscViewer viewer;
   DM          vdm, c6dm, c1dm; /* vertex (3 dof), cell (6 dof) and cell (1 dof) layouts */
   Vec           Uloc, vloc, disp, stress, strain, vonmises, plastic, back, yielding;
+  Vec           stepnum; /* one value, on rank 0: the accepted step of the output step (/fields/step) */
   IndCellFields cells; /* per local cell, filled by the assembly */
   IndContact    contact;                      /* NULL without an indenter */
   Vec           Gc, Cloc, c3, pressure, status; /* contact fields: disc layout (global, local),

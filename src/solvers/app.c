@@ -116,7 +116,8 @@ PetscErrorCode IndAppCreate(MPI_Comm comm, IndApp *out)
   }
 
   PetscCall(
-    IndOutputCheckSize(app->output, IndLoadPathStepsLeft(&app->path, IND_MAX_OUTPUT_STEPS + 1), &app->warnings));
+    IndOutputCheckSize(app->output, IndLoadPathStepsLeft(&app->path, IndOutputFieldsEvery(app->output),
+                                                         IND_MAX_OUTPUT_STEPS + 1), &app->warnings));
   PetscCall(VecGetSize(app->U, &ndof));
   {
     const IndDiscLayout *L;
@@ -318,7 +319,14 @@ PetscErrorCode IndAppRun(IndApp app)
             "  time %.3f s\n", lp->accepted, (double)r.lambda, r.newton, r.linear, r.plastic, lp->cutbacks, r.seconds));
     }
     PetscCall(IndRunCheckStep(app, &r, &app->warnings, PETSC_TRUE));
-    PetscCall(IndOutputSetStepInfo(app->output, lp->accepted, r.t, r.lambda, r.depth, r.contact.load * 1e-3));
+    /* Unloading ends once the indenter has left the surface, or (load control) at a fraction of the largest
+       load: known before the writes, since the last step's fields are always written. */
+    if (app->contact && IndLoadPathUnloading(lp, t) && r.contact.contact == 0) IndLoadPathFinish(lp);
+    if (lp->unload_to > 0 && IndLoadPathUnloading(lp, t) && IndLoadPathFactor(lp, t) <= lp->unload_to)
+      IndLoadPathFinish(lp);
+    r.fields = IndLoadPathFieldStep(lp, IndOutputFieldsEvery(app->output));
+    if (r.fields) PetscCall(IndOutputSetStepInfo(app->output, lp->accepted, r.t, r.lambda, r.depth,
+                                                 r.contact.load * 1e-3));
     if (app->contact) {
       IndCurvePoint p = {lp->accepted, r.t, r.depth, r.contact.load * 1e-3, r.contact.contact, r.contact.stick,
         r.contact.slip, r.newton, r.outer, r.linear, lp->cutbacks, r.contact.penetration, r.contact.area,
@@ -349,11 +357,6 @@ PetscErrorCode IndAppRun(IndApp app)
                               (double)csm.h_c, (double)csm.H, (double)csm.E_r));
     }
     if (app->monitor) PetscCall(app->monitor(app, &r, app->monitor_ctx));
-    /* Unloading ends once the indenter has left the surface. */
-    if (app->contact && IndLoadPathUnloading(lp, t) && r.contact.contact == 0) IndLoadPathFinish(lp);
-    /* Load control may stop unloading at a fraction of the largest load. */
-    if (lp->unload_to > 0 && IndLoadPathUnloading(lp, t) && IndLoadPathFactor(lp,
-      t) <= lp->unload_to) IndLoadPathFinish(lp);
     if (lp->accepted == app->stop_after) IndSignalsRaise(SIGTERM);
     else if (app->checkpoint_every && lp->accepted % app->checkpoint_every == 0 && !IndLoadPathDone(lp))
       PetscCall(IndAppWriteCheckpoint(app, PETSC_FALSE));

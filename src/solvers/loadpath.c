@@ -164,14 +164,29 @@ void IndLoadPathAccept(IndLoadPath *lp, PetscInt its)
   } else if (its <= lp->easy_its) lp->dt = PetscMin(lp->dt * lp->growth, lp->dt_max);
 }
 
-PetscInt IndLoadPathStepsLeft(const IndLoadPath *lp, PetscInt limit)
+PetscBool IndLoadPathAtSegmentEnd(const IndLoadPath *lp)
+{
+  /* Accepted steps end exactly on a segment's end (IndLoadPathTarget), so equality is the test. */
+  const PetscReal ends[4] = {1.0, 1.0 + lp->hold, 1.0 + lp->hold + lp->scratch, lp->t_end};
+  for (int k = 0; k < 4; ++k)
+    if (lp->t == ends[k]) return PETSC_TRUE;
+  return PETSC_FALSE;
+}
+
+PetscBool IndLoadPathFieldStep(const IndLoadPath *lp, PetscInt every)
+{
+  if (every <= 1 || lp->accepted % every == 0) return PETSC_TRUE;
+  return IndLoadPathAtSegmentEnd(lp) || IndLoadPathDone(lp) ? PETSC_TRUE : PETSC_FALSE;
+}
+
+PetscInt IndLoadPathStepsLeft(const IndLoadPath *lp, PetscInt every, PetscInt limit)
 {
   IndLoadPath copy = *lp;
   PetscInt    n    = 0;
 
   while (!IndLoadPathDone(&copy) && n < limit) {
     IndLoadPathAccept(&copy, copy.easy_its + 1); /* not easy: no growth beyond the program's own */
-    n++;
+    if (IndLoadPathFieldStep(&copy, every)) n++;
   }
   return n;
 }

@@ -67,12 +67,12 @@ static PetscErrorCode WriteStepFiles(IndApp app, const void *a, const void *b, c
 
   PetscFunctionBeginUser;
   PetscCall(PetscSNPrintf(file, len, "%s", IndOutputGetFieldFile(app->output)));
-  if (IndOutputFieldsEnabled(app->output)) {
+  if (IndOutputFieldsEnabled(app->output) && r->fields) {
     PetscReal bytes;
     PetscCall(IndOutputBytesPerStep(app->output, &bytes));
     PetscCall(IndIOFaultCheckRoom(app->comm, file, 1.05 * bytes + (1 << 16)));
   }
-  PetscCall(IndOutputWriteStep(app->output, app->contact ? r->depth : r->lambda, app->U, app->assembly));
+  if (r->fields) PetscCall(IndOutputWriteStep(app->output, app->contact ? r->depth : r->lambda, app->U, app->assembly));
   if (p) {
     PetscCall(PetscSNPrintf(file, len, "%s/load_displacement.csv", IndOutputGetDir(app->output)));
     PetscCall(IndOutputCurvePoint(app->output, p));
