@@ -8,6 +8,7 @@ packages=(
   petsc-dev libhdf5-openmpi-dev openmpi-bin libopenmpi-dev libmetis-dev
   libopenblas0-serial gmsh
   python3 python3-numpy python3-scipy python3-h5py python3-matplotlib python3-meshio python3-xlrd
+  slurm-wlm munge
 )
 
 missing=()
