@@ -94,7 +94,7 @@ static PetscErrorCode WriteProvenance(IndOutput o)
   char       *opts, petsc[256], date[256];
 
   PetscFunctionBeginUser;
-  PetscCallMPI(MPI_Comm_size(PetscObjectComm((PetscObject)o->vdm), &size));
+  PetscCallMPI(MPI_Comm_size(PetscObjectComm((PetscObject)o->dm), &size));
   ranks = size;
   PetscCall(PetscGetVersion(petsc, sizeof(petsc)));
   PetscCall(PetscGetDate(date, sizeof(date)));
@@ -114,7 +114,7 @@ static PetscErrorCode WriteProvenance(IndOutput o)
 /* mkdir -p on rank 0, checked before any solve so that a bad -output_dir costs nothing. */
 static PetscErrorCode OpenFile(IndOutput o)
 {
-  MPI_Comm     comm = PetscObjectComm((PetscObject)o->vdm);
+  MPI_Comm     comm = PetscObjectComm((PetscObject)o->dm);
   DM           cdm;
   Vec          X, coords, plain;
   PetscSection cs;
@@ -199,7 +199,7 @@ static PetscErrorCode WriteXdmf(IndOutput o, PetscReal time)
     steps[k] = (IndXdmfStep){PetscIsNanReal(in[0]) ? -1 : (PetscInt)in[0], o->times[k], in[1], in[2], in[3]};
   }
   PetscCall(PetscSNPrintf(path, sizeof(path), "%s/indent.xdmf", o->dir));
-  PetscCall(IndXdmfWrite(PetscObjectComm((PetscObject)o->vdm), path, &mesh, nfields, fields, o->nsteps, steps));
+  PetscCall(IndXdmfWrite(PetscObjectComm((PetscObject)o->dm), path, &mesh, nfields, fields, o->nsteps, steps));
   PetscCall(PetscFree(steps));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -207,7 +207,7 @@ static PetscErrorCode WriteXdmf(IndOutput o, PetscReal time)
 PetscErrorCode IndOutputSetStepInfo(IndOutput o, PetscInt step, PetscReal t, PetscReal lambda, PetscReal depth,
                                     PetscReal load)
 {
-  MPI_Comm   comm = PetscObjectComm((PetscObject)o->vdm);
+  MPI_Comm   comm = PetscObjectComm((PetscObject)o->dm);
   PetscReal *info;
 
   PetscFunctionBeginUser;
@@ -224,6 +224,53 @@ PetscErrorCode IndOutputSetStepInfo(IndOutput o, PetscInt step, PetscReal t, Pet
   info[2]             = o->contact ? depth : NAN;
   info[3]             = o->contact ? load : NAN;
   o->info_set         = PETSC_TRUE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The layouts and vectors of the fields, made at the first write: a run without field output never holds
+   them, and one with it not during its first solve, where the memory peaks (on a box of 824k dofs they
+   are about 10 doubles per dof, and a section per layout over every mesh point). */
+static PetscErrorCode CreateFieldObjects(IndOutput o)
+{
+  MPI_Comm    comm = PetscObjectComm((PetscObject)o->dm);
+  PetscMPIInt rank;
+
+  PetscFunctionBeginUser;
+  if (o->vdm) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(CreateStratumDM(o->dm, PETSC_FALSE, 3, &o->vdm));
+  PetscCall(CreateStratumDM(o->dm, PETSC_TRUE, 6, &o->c6dm));
+  PetscCall(CreateStratumDM(o->dm, PETSC_TRUE, 1, &o->c1dm));
+  PetscCall(DMCreateLocalVector(o->dm, &o->Uloc));
+  PetscCall(DMCreateLocalVector(o->vdm, &o->vloc));
+  PetscCall(DMCreateGlobalVector(o->vdm, &o->disp));
+  PetscCall(DMCreateGlobalVector(o->c6dm, &o->stress));
+  PetscCall(DMCreateGlobalVector(o->c6dm, &o->strain));
+  PetscCall(DMCreateGlobalVector(o->c1dm, &o->vonmises));
+  PetscCall(DMCreateGlobalVector(o->c1dm, &o->plastic));
+  PetscCall(DMCreateGlobalVector(o->c1dm, &o->back));
+  PetscCall(DMCreateGlobalVector(o->c1dm, &o->yielding));
+  PetscCall(PetscObjectSetName((PetscObject)o->disp, "displacement"));
+  PetscCall(PetscObjectSetName((PetscObject)o->stress, "stress"));
+  PetscCall(PetscObjectSetName((PetscObject)o->strain, "strain"));
+  PetscCall(PetscObjectSetName((PetscObject)o->vonmises, "von_mises"));
+  PetscCall(PetscObjectSetName((PetscObject)o->plastic, "plastic_strain"));
+  PetscCall(PetscObjectSetName((PetscObject)o->back, "back_stress"));
+  PetscCall(PetscObjectSetName((PetscObject)o->yielding, "yielding"));
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  PetscCall(VecCreateMPI(comm, rank ? 0 : 1, 1, &o->stepnum));
+  PetscCall(PetscObjectSetName((PetscObject)o->stepnum, "step"));
+  if (o->contact) {
+    DM v1dm;
+    PetscCall(DMCreateGlobalVector(o->dm, &o->Gc));
+    PetscCall(DMCreateLocalVector(o->dm, &o->Cloc));
+    PetscCall(DMCreateGlobalVector(o->vdm, &o->c3));
+    PetscCall(CreateStratumDM(o->dm, PETSC_FALSE, 1, &v1dm));
+    PetscCall(DMCreateGlobalVector(v1dm, &o->pressure));
+    PetscCall(DMCreateGlobalVector(v1dm, &o->status));
+    PetscCall(DMDestroy(&v1dm));
+    PetscCall(PetscObjectSetName((PetscObject)o->pressure, "contact_pressure"));
+    PetscCall(PetscObjectSetName((PetscObject)o->status, "contact_status"));
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -263,31 +310,6 @@ PetscErrorCode IndOutputCreate(IndMesh mesh, IndDisc disc, IndOutput *out)
   PetscCheck(o->dir[0], comm, PETSC_ERR_ARG_WRONG, "-output_dir must not be empty");
   PetscCall(PetscSNPrintf(o->h5name, sizeof(o->h5name), "%s/indent.h5", o->dir));
   if (o->enabled || o->curve) PetscCall(IndMakeDirectory(comm, o->dir, "-output_dir"));
-  PetscCall(CreateStratumDM(o->dm, PETSC_FALSE, 3, &o->vdm));
-  PetscCall(CreateStratumDM(o->dm, PETSC_TRUE, 6, &o->c6dm));
-  PetscCall(CreateStratumDM(o->dm, PETSC_TRUE, 1, &o->c1dm));
-  PetscCall(DMCreateLocalVector(o->dm, &o->Uloc));
-  PetscCall(DMCreateLocalVector(o->vdm, &o->vloc));
-  PetscCall(DMCreateGlobalVector(o->vdm, &o->disp));
-  PetscCall(DMCreateGlobalVector(o->c6dm, &o->stress));
-  PetscCall(DMCreateGlobalVector(o->c6dm, &o->strain));
-  PetscCall(DMCreateGlobalVector(o->c1dm, &o->vonmises));
-  PetscCall(DMCreateGlobalVector(o->c1dm, &o->plastic));
-  PetscCall(DMCreateGlobalVector(o->c1dm, &o->back));
-  PetscCall(DMCreateGlobalVector(o->c1dm, &o->yielding));
-  PetscCall(PetscObjectSetName((PetscObject)o->disp, "displacement"));
-  PetscCall(PetscObjectSetName((PetscObject)o->stress, "stress"));
-  PetscCall(PetscObjectSetName((PetscObject)o->strain, "strain"));
-  PetscCall(PetscObjectSetName((PetscObject)o->vonmises, "von_mises"));
-  PetscCall(PetscObjectSetName((PetscObject)o->plastic, "plastic_strain"));
-  PetscCall(PetscObjectSetName((PetscObject)o->back, "back_stress"));
-  PetscCall(PetscObjectSetName((PetscObject)o->yielding, "yielding"));
-  {
-    PetscMPIInt rank;
-    PetscCallMPI(MPI_Comm_rank(comm, &rank));
-    PetscCall(VecCreateMPI(comm, rank ? 0 : 1, 1, &o->stepnum));
-    PetscCall(PetscObjectSetName((PetscObject)o->stepnum, "step"));
-  }
   PetscCall(PetscMalloc1(IND_MAX_OUTPUT_STEPS, &o->times));
   PetscCall(PetscMalloc1(IND_OUTPUT_INFO * IND_MAX_OUTPUT_STEPS, &o->info));
   for (PetscInt i = 0; i < IND_OUTPUT_INFO * IND_MAX_OUTPUT_STEPS; ++i) o->info[i] = NAN;
@@ -295,19 +317,35 @@ PetscErrorCode IndOutputCreate(IndMesh mesh, IndDisc disc, IndOutput *out)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The mesh's vertices, each counted on the rank that owns it (not a leaf of the point SF). */
+static PetscErrorCode CountVertices(DM dm, PetscInt *n)
+{
+  PetscSF         sf;
+  const PetscInt *leaves;
+  PetscInt        nleaves, vStart, vEnd, ghosts = 0;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMGetPointSF(dm, &sf));
+  PetscCall(PetscSFGetGraph(sf, NULL, &nleaves, &leaves, NULL));
+  PetscCall(DMPlexGetDepthStratum(dm, 0, &vStart, &vEnd));
+  for (PetscInt i = 0; i < PetscMax(nleaves, 0); ++i) {
+    const PetscInt p = leaves ? leaves[i] : i;
+    ghosts += p >= vStart && p < vEnd;
+  }
+  *n = vEnd - vStart - ghosts;
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, n, 1, MPIU_INT, MPI_SUM, PetscObjectComm((PetscObject)dm)));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode IndOutputBytesPerStep(IndOutput o, PetscReal *bytes)
 {
-  Vec      v;
   PetscInt nvert, ncell = o->layout->ncell;
 
   PetscFunctionBeginUser;
   *bytes = 0;
   if (!o->enabled) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCall(DMGetGlobalVector(o->vdm, &v));
-  PetscCall(VecGetSize(v, &nvert));
-  PetscCall(DMRestoreGlobalVector(o->vdm, &v));
-  nvert /= 3;
-  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &ncell, 1, MPIU_INT, MPI_SUM, PetscObjectComm((PetscObject)o->vdm)));
+  PetscCall(CountVertices(o->dm, &nvert));
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &ncell, 1, MPIU_INT, MPI_SUM, PetscObjectComm((PetscObject)o->dm)));
   /* per vertex: displacement (3), contact pressure and status (2); per cell: stress and strain (6 each),
      von Mises, plastic strain, back stress, yielding */
   *bytes = sizeof(PetscReal) * ((PetscReal)nvert * (o->contact ? 5 : 3) + (PetscReal)ncell * 16);
@@ -316,7 +354,7 @@ PetscErrorCode IndOutputBytesPerStep(IndOutput o, PetscReal *bytes)
 
 PetscErrorCode IndOutputCheckSize(IndOutput o, PetscInt steps_left, IndWarnings *w)
 {
-  MPI_Comm    comm = PetscObjectComm((PetscObject)o->vdm);
+  MPI_Comm    comm = PetscObjectComm((PetscObject)o->dm);
   PetscReal   per, total, avail = -1;
   PetscMPIInt rank;
   char        text[IND_WARNING_LEN];
@@ -351,20 +389,9 @@ PetscErrorCode IndOutputCheckSize(IndOutput o, PetscInt steps_left, IndWarnings 
 
 PetscErrorCode IndOutputSetContact(IndOutput o, IndContact contact)
 {
-  DM v1dm;
-
   PetscFunctionBeginUser;
+  PetscCheck(!o->vdm, PetscObjectComm((PetscObject)o->dm), PETSC_ERR_ORDER, "Set the contact before the first write");
   o->contact = contact;
-  if (!contact) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCall(DMCreateGlobalVector(o->dm, &o->Gc));
-  PetscCall(DMCreateLocalVector(o->dm, &o->Cloc));
-  PetscCall(DMCreateGlobalVector(o->vdm, &o->c3));
-  PetscCall(CreateStratumDM(o->dm, PETSC_FALSE, 1, &v1dm));
-  PetscCall(DMCreateGlobalVector(v1dm, &o->pressure));
-  PetscCall(DMCreateGlobalVector(v1dm, &o->status));
-  PetscCall(DMDestroy(&v1dm));
-  PetscCall(PetscObjectSetName((PetscObject)o->pressure, "contact_pressure"));
-  PetscCall(PetscObjectSetName((PetscObject)o->status, "contact_status"));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -411,6 +438,7 @@ PetscErrorCode IndOutputWriteStep(IndOutput o, PetscReal time, Vec U, IndAssembl
     "More than %d output steps", IND_MAX_OUTPUT_STEPS);
   PetscCall(PetscLogStagePush(IndLog.output));
   PetscCall(PetscLogEventBegin(IndLog.output_write, 0, 0, 0, 0));
+  PetscCall(CreateFieldObjects(o));
   if (!o->viewer) PetscCall(OpenFile(o));
   PetscCall(DMGlobalToLocal(o->dm, U, INSERT_VALUES, o->Uloc));
   PetscCall(DMGetLocalSection(o->dm, &us));
@@ -475,7 +503,7 @@ PetscErrorCode IndOutputCurvePoint(IndOutput o, const IndCurvePoint *p)
 
   PetscFunctionBeginUser;
   if (!o->curve) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCallMPI(MPI_Comm_rank(PetscObjectComm((PetscObject)o->vdm), &rank));
+  PetscCallMPI(MPI_Comm_rank(PetscObjectComm((PetscObject)o->dm), &rank));
   if (rank) PetscFunctionReturn(PETSC_SUCCESS);
   if (!o->csv) {
     char path[PETSC_MAX_PATH_LEN];

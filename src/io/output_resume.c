@@ -37,7 +37,7 @@ PetscErrorCode IndOutputResume(IndOutput o, PetscInt npts, const IndCurvePoint *
   PetscBool   exists = PETSC_FALSE;
 
   PetscFunctionBeginUser;
-  PetscCallMPI(MPI_Comm_rank(PetscObjectComm((PetscObject)o->vdm), &rank));
+  PetscCallMPI(MPI_Comm_rank(PetscObjectComm((PetscObject)o->dm), &rank));
   if (o->curve && !rank) {
     char  path[PETSC_MAX_PATH_LEN], tmp[PETSC_MAX_PATH_LEN];
     FILE *fp;
@@ -74,7 +74,7 @@ PetscErrorCode IndOutputWriteCellKeys(IndOutput o)
 
 PetscErrorCode IndOutputOpenResumed(IndOutput o)
 {
-  MPI_Comm           comm = PetscObjectComm((PetscObject)o->vdm);
+  MPI_Comm           comm = PetscObjectComm((PetscObject)o->dm);
   DM                 cdm;
   PetscSection       cs, vs;
   Vec                X, coords;
