@@ -124,7 +124,8 @@ PetscErrorCode IndAppCreate(MPI_Comm comm, IndApp *out)
     PetscCall(IndDiscGetLayout(app->disc, &L));
     ncell = L->ncell;
     PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &ncell, 1, MPIU_INT, MPI_SUM, comm));
-    if (!app->quiet) {
+    /* not for a listing (-help, or the option check before gmsh), whose mesh is a stand-in */
+    if (!app->quiet && !IndHelpListing()) {
       PetscMPIInt size;
       const char *source;
       PetscCall(IndMeshGetSource(app->mesh, &source));
