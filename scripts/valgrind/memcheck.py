@@ -28,13 +28,17 @@ SUPPRESSIONS = os.path.join(HERE, "openmpi.supp")
 # The unit and component tests, but for those that run for seconds without valgrind (which is 20 to 50
 # times slower): the manufactured solutions (three meshes each), the P2 Newton tests, the Newton tests of the
 # hardening laws other than Voce (their kernels run under it in unit_plasticity, their table's file in
-# plastic_uniaxial_table_np2), all but one state round trip (about 11 s each under valgrind) and
-# solver_anatomy (3 s alone, 80 s under valgrind; its solves are the runs' own, checked by the others). Plus the
+# plastic_uniaxial_table_np2), all but one state round trip (about 11 s each under valgrind),
+# solver_anatomy (3 s alone, 80 s under valgrind; its solves are the runs' own, checked by the others),
+# ew_tangent_predictor (43 s under valgrind: PETSc's Eisenstat-Walker with the tangent predictor, whose solve
+# runs at the first step of every indentation here) and all but two of the eight run_checks_* (the same
+# program deciding other warnings, 7 s each, mostly valgrind's start). Plus the
 # flat-punch contact patch test, which also runs on 2 ranks, a small indentation that writes every
 # output file (HDF5 fields, XDMF, curve, summary) and a small scratch (scratch.csv, the sliding contact).
 LABELS = {"unit", "component"}
 SLOW = re.compile(r"^(mms_|plastic_newton(_finite)?_tet_P2|plastic_newton_(power|swift|table)_|"
-                  r"state_roundtrip_(depth_np2|load|fixed_point)|solver_anatomy)")
+                  r"state_roundtrip_(depth_np2|load|fixed_point)|solver_anatomy|ew_tangent_predictor|"
+                  r"run_checks_(edge_small|edge_quarter|area|inverted|loading_touches))")
 TWO_RANKS = "contact_patch_hex_Q1_np2"
 EXTRA = {TWO_RANKS, "xdmf_indent_run", "example_scratch_np2"}
 VALGRIND_EXIT = 99  # --error-exitcode: tells memcheck's errors from the test's own failures
