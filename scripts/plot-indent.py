@@ -323,13 +323,18 @@ def peak_step(run, curve):
     return int(np.argmax(curve["load_uN"][run.rows]))
 
 
+def slice_reach(run, curve):
+    """Half-width of the stress slice: 3 contact radii at the written step of P_max cover the plastic zone
+    and the stress bulb under it; the film of the paper (300 nm under a 60 nm indent with a ~170 nm contact
+    radius) fits with some substrate."""
+    return 3.0 * contact_radius(curve, int(run.rows[peak_step(run, curve)]))  # that step's row of the curve
+
+
 def plot_stress_slice(run, curve, path):
     # the fields' steps, with the depth and load of their own rows of the curve
     depth, load = curve["depth_nm"][run.rows], curve["load_uN"][run.rows]
     peak, last = peak_step(run, curve), run.nsteps - 1
-    # 3 contact radii cover the plastic zone and the stress bulb under it; the film of the paper
-    # (300 nm under a 60 nm indent with a ~160 nm contact radius) fits with some substrate.
-    reach = 3.0 * contact_radius(curve, peak)
+    reach = slice_reach(run, curve)
     xmin = -run.hi[0] if 0 in run.mirror_axes else run.lo[0]
     window = ((max(-reach, xmin), min(reach, run.hi[0])), (max(run.z_top - reach, run.lo[2]), run.z_top))
     section = section_y0(run)

@@ -6,7 +6,8 @@
 runs it with --out in a fresh temporary directory, then checks that the three PNGs are PNGs, that
 imprint.csv has one finite row per top-surface vertex with heights equal to z + u_z - z_top of the
 last step (recomputed here from indent.h5), that the deepest point is below the surface and near the
-axis, and that a missing run directory is an error. Prints ok or FAIL: ..., exit status 0 or 1."""
+axis, that the written steps' fields are read beside their own rows of the curve (P_max's among them),
+and that a missing run directory is an error. Prints ok or FAIL: ..., exit status 0 or 1."""
 import csv
 import os
 import subprocess
@@ -95,6 +96,30 @@ def check_imprint(out, run_dir):
     return len(got), h[deepest], float(h.max()), diff
 
 
+def check_field_rows(run_dir):
+    """plot-indent's match of the written steps to the curve's rows (fields are written at some steps only,
+    -output_fields_every): each written step's row holds its step, P_max's row is written (the end of loading)
+    and the stress slice's width comes from that row's contact radius."""
+    import importlib.util
+    scripts = os.path.dirname(SCRIPT)
+    sys.path.insert(0, scripts)
+    spec = importlib.util.spec_from_file_location("plot_indent", SCRIPT)
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    curve, run, _ = mod.load_inputs(run_dir)
+    with run.h5:
+        steps = curve["step"][run.rows].astype(int)
+        require(list(steps) == [int(k) for k in run.steps], f"written steps {list(run.steps)} read at rows of steps "
+                f"{list(steps)}")
+        top = int(np.argmax(curve["load_uN"]))
+        peak = int(run.rows[mod.peak_step(run, curve)])
+        require(peak == top, f"the slice's P_max is the curve's row {peak}, the largest load is at row {top}")
+        reach = mod.slice_reach(run, curve)
+        want = 3.0 * mod.contact_radius(curve, top)
+        require(abs(reach - want) <= 1e-12 * want, f"the slice reaches {reach:g} nm, 3 contact radii at P_max are {want:g}")
+    return len(run.steps), len(curve["step"])
+
+
 def check_missing_dir(tmp):
     missing = os.path.join(tmp, "no-such-run")
     res = plot(missing, "--out", os.path.join(tmp, "never"))
@@ -109,8 +134,10 @@ def main(run_dir):
         require(res.returncode == 0, f"plot-indent.py exited with {res.returncode}: {res.stderr.strip()}")
         check_pngs(out)
         rows, hmin, hmax, diff = check_imprint(out, run_dir)
+        written, steps = check_field_rows(run_dir)
         check_missing_dir(tmp)
-    print(f"ok: 3 PNGs, imprint.csv {rows} rows, height {hmin:.4g} .. {hmax:.4g} nm, largest difference from indent.h5 {diff:.2g} nm")
+    print(f"ok: 3 PNGs, imprint.csv {rows} rows, height {hmin:.4g} .. {hmax:.4g} nm, largest difference from indent.h5 {diff:.2g} nm; "
+          f"fields of {written} of {steps} steps matched to their rows")
 
 
 if __name__ == "__main__":
