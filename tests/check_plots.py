@@ -116,7 +116,8 @@ def check_field_rows(run_dir):
         require(peak == top, f"the slice's P_max is the curve's row {peak}, the largest load is at row {top}")
         reach = mod.slice_reach(run, curve)
         want = 3.0 * mod.contact_radius(curve, top)
-        require(abs(reach - want) <= 1e-12 * want, f"the slice reaches {reach:g} nm, 3 contact radii at P_max are {want:g}")
+        require(abs(reach - want) <= 1e-12 * want,
+                f"the slice reaches {reach:g} nm, 3 contact radii at P_max are {want:g}")
     return len(run.steps), len(curve["step"])
 
 
@@ -136,8 +137,8 @@ def main(run_dir):
         rows, hmin, hmax, diff = check_imprint(out, run_dir)
         written, steps = check_field_rows(run_dir)
         check_missing_dir(tmp)
-    print(f"ok: 3 PNGs, imprint.csv {rows} rows, height {hmin:.4g} .. {hmax:.4g} nm, largest difference from indent.h5 {diff:.2g} nm; "
-          f"fields of {written} of {steps} steps matched to their rows")
+    print(f"ok: 3 PNGs, imprint.csv {rows} rows, height {hmin:.4g} .. {hmax:.4g} nm, largest difference from "
+          f"indent.h5 {diff:.2g} nm; fields of {written} of {steps} steps matched to their rows")
 
 
 if __name__ == "__main__":
