@@ -11,10 +11,14 @@ field passes, 1 otherwise, 2 on bad input.
   h5compare.py RUN.h5 REFERENCE.h5 [--field NAME:ATOL:RTOL ...] [--step N]
 """
 import argparse
+import os
 import sys
 
 import h5py
 import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from runfiles import InputError, field_steps  # noqa: E402  (this script's folder)
 
 
 
@@ -42,14 +46,6 @@ def load(path):
         if need not in f:
             bad_input(f"'{path}' has no /{need}: not an indent output file")
     return f
-
-
-def field_steps(f):
-    """The accepted step of each output step: /fields/step, or 1, 2, ... in a file written before it."""
-    n = f["fields/displacement"].shape[0] if "fields/displacement" in f else 0
-    if "fields/step" not in f:
-        return np.arange(1, n + 1)
-    return f["fields/step"][:].reshape(-1).astype(np.int64)
 
 
 def main():
@@ -81,7 +77,10 @@ def main():
         print("FAIL mesh: cell centroids do not match")
         return 1
 
-    sa, sb = field_steps(a), field_steps(b)
+    try:
+        sa, sb = field_steps(a, args.run), field_steps(b, args.reference)
+    except InputError as e:
+        bad_input(str(e))
     where = {int(k): i for i, k in enumerate(sb)}
     if any(int(k) not in where for k in sa) or (len(sa) and len(sb) and sa[-1] != sb[-1]):
         print(f"FAIL steps: the run's field steps {list(sa)} are not among the reference's {list(sb)} with the same last")

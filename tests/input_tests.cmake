@@ -113,6 +113,8 @@ indent_script_test(bad_indenter_angle ${EXPECT_ERROR} "-indenter_angle must lie 
   ${INDENT} ${OK_BOX} ${ELASTIC} -bc_fixed bottom -indenter_type cone -indenter_angle 95 -load_depth 0.1)
 indent_script_test(bad_unload_steps ${EXPECT_ERROR} "-load_unload_steps must be >= 1"
   ${INDENT} ${OK_BOX} ${ELASTIC} -bc_fixed bottom -indenter_type cone -load_depth 0.1 -load_unload_steps 0)
+indent_script_test(bad_output_fields_every ${EXPECT_ERROR} "-output_fields_every must be >= 1, got 0"
+  ${INDENT} ${OK_BOX} ${ELASTIC} -bc_fixed bottom -indenter_type cone -load_depth 0.1 -output_fields_every 0)
 indent_script_test(bad_rho_scale ${EXPECT_ERROR} "-contact_rho_scale must be > 0, got -1"
   ${INDENT} ${OK_BOX} ${ELASTIC} -bc_fixed bottom -indenter_type cone -load_depth 0.1 -contact_rho_scale -1)
 indent_script_test(bad_sharp_rounding ${EXPECT_ERROR} "-indenter_sharp_rounding must be >= 0 \\(nm\\), got -1"
