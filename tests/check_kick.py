@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Kick's law: a sharp cone in an elastic-perfectly-plastic block gives P = C h^2.
 
-  check_kick.py --indent BIN --mesh MESH --workdir DIR [--np 2] [--mpiexec M]
+  check_kick.py --indent BIN --mesh MESH --workdir DIR [--np 2] [--mpiexec M] [--section]
                 [--mpiexec-args "--oversubscribe"] [--depth 36] [--steps 12]
                 [--min-elements 5] [--tol 0.02] [--young 100] [--yield 1] [--friction 0]
                 [--options "-formulation finite ..."] [--expect-C GPa --C-tol 0.1] [--unload-steps N]
@@ -15,6 +15,10 @@ mesh brings one in (the elements), and the check applies once the contact radius
 indent, symmetry included) reaches the --min-elements-th node from the tip along the mesh edge
 y = z = 0 (the element boundaries along the radius, read from the mesh). Over those steps every
 P / h^2 must lie within --tol of their mean.
+
+With --section the mesh is the axisymmetric section of tests/meshes/kick_section.geo (x = r, y the axis in
+the file; its top edge y = z = 0 is the radius) and the run has no symmetry planes: its loads and areas are
+the whole indent's already.
 
 The contact grows by whole nodes, so the mesh under the contact must be uniform for P / h^2 to be:
 on blocks graded right from the tip (tests/meshes/hertz_block.geo) the rings of nodes widen as they
@@ -48,7 +52,7 @@ def indent_options(args):
     return [
         "-domain_young", f"{args.young:g}", "-domain_poisson", str(NU),
         "-domain_model", "plastic", "-domain_yield", f"{args.yield_stress:g}", "-domain_hardening", "linear",
-        "-domain_hardening_slope", "0", "-bc_symmetry", "left,front", "-bc_fixed", "bottom",
+        "-domain_hardening_slope", "0", *([] if args.section else ["-bc_symmetry", "left,front"]), "-bc_fixed", "bottom",
         "-indenter_type", "cone", "-indenter_radius", "0", "-contact_friction", f"{args.friction:g}",
         *(["-load_unload_steps", str(args.unload_steps)] if args.unload_steps else ["-load_unload", "0"]),
         "-ksp_type", "preonly", "-pc_type", "lu", "-pc_factor_mat_solver_type", "mumps",
@@ -75,6 +79,8 @@ def parse():
     ap.add_argument("--expect-C", type=float, default=None, help="expected P/h^2, GPa (none: not checked)")
     ap.add_argument("--C-tol", type=float, default=0.1, help="relative tolerance on --expect-C (0.1)")
     ap.add_argument("--unload-steps", type=int, default=0, help="unload in this many steps and check the pile-up trend (0)")
+    ap.add_argument("--section", action="store_true",
+                    help="the mesh is an axisymmetric section (tests/meshes/kick_section.geo, x = r, y the axis): no symmetry planes")
     args = ap.parse_args()
     meshcheck.check_common(PROG, args)
     if args.steps < 1 or args.min_elements < 1:

@@ -12,12 +12,13 @@ typedef struct _p_IndDisc *IndDisc;
 typedef struct {
   PetscInt         degree;
   PetscBool        simplex;
+  PetscBool        axisymmetric; /* 2D cells in the plane y = 0, x the radius: weights 2 pi r, hoop strain u_x / r */
   PetscInt         nq;    /* quadrature points per cell */
   PetscInt         nb;    /* scalar basis functions (nodes) per cell */
   PetscInt         ndof;  /* 3 * nb */
   const PetscReal *w;     /* reference quadrature weights */
   const PetscReal *N;     /* nq x nb reference shape function values */
-  const PetscReal *dN;    /* nq x nb x 3 reference gradients */
+  const PetscReal *dN;    /* nq x nb x 3 reference gradients (the third 0 on 2D cells) */
   PetscInt         ncell; /* local cells, numbered cStart + i */
   PetscInt         cStart;
   const PetscInt  *lidx;  /* ncell x ndof local-vector indices, closure order */
@@ -47,12 +48,27 @@ static inline void IndDiscCellNodes(const IndDiscLayout *disc, PetscInt i, const
   for (PetscInt k = 0; k < disc->ndof; ++k) xc[k] = PetscRealPart(xn[idx[k]]);
 }
 
+/* The Jacobian J (row-major, J[3 d + k] = d x_d / d xi_k) of the map from the reference cell, from the node
+   positions xc and the reference gradients dN of one point. A 2D cell lies in the plane y = 0: its third
+   reference direction is mapped onto -y, so that det J is its area's and the gradients have no y part. */
+static inline PetscReal IndDiscJacobian(PetscInt n, PetscBool planar, const PetscReal *xc, const PetscReal *dN,
+                                        PetscReal J[9])
+{
+  for (int k = 0; k < 9; ++k) J[k] = 0.0;
+  for (PetscInt a = 0; a < n; ++a)
+    for (int d = 0; d < 3; ++d)
+      for (int k = 0; k < 3; ++k) J[3 * d + k] += xc[3 * a + d] * dN[3 * a + k];
+  if (planar) J[5] = -1.0;
+  return IndDet3(J);
+}
+
 /* Physical shape-function gradients G (nb x 3) at quadrature point q of local cell i, whose node
-   positions are xc (IndDiscCellNodes); returns the quadrature weight times det J. The Jacobian of the
-   coordinate map is recomputed here rather than stored: 80 bytes a quadrature point, 640 a hexahedron,
-   against some 80 flops a point. */
+   positions are xc (IndDiscCellNodes); returns the quadrature weight times det J, and on an axisymmetric
+   section times 2 pi r, the volume of revolution. There hoop (nb) receives N_a / r, the hoop strain's
+   derivative in u_x of node a; it is left alone in 3D. The Jacobian of the coordinate map is recomputed here
+   rather than stored: 80 bytes a quadrature point, 640 a hexahedron, against some 80 flops a point. */
 static inline PetscReal IndDiscGradients(const IndDiscLayout *disc, PetscInt i, const PetscReal *xc, PetscInt q,
-                                         PetscReal *G)
+                                         PetscReal *G, PetscReal *hoop)
 {
   const PetscInt   nb = disc->nb;
   const PetscReal *dN = disc->dN + q * nb * 3, *iJ;
@@ -62,17 +78,22 @@ static inline PetscReal IndDiscGradients(const IndDiscLayout *disc, PetscInt i, 
     iJ = disc->invJ + (i * disc->nq + q) * 9;
     w  = disc->wdetJ[i * disc->nq + q];
   } else {
-    PetscReal J[9] = {0}, det;
-    for (PetscInt a = 0; a < nb; ++a)
-      for (int d = 0; d < 3; ++d)
-        for (int k = 0; k < 3; ++k) J[3 * d + k] += xc[3 * a + d] * dN[3 * a + k];
-    det = IndDet3(J);
+    PetscReal J[9], det;
+    det = IndDiscJacobian(nb, disc->axisymmetric, xc, dN, J);
     IndInverse3(J, det, Ji);
     iJ = Ji;
-    w  = disc->w[q] * det;
+    w  = disc->w[q] * PetscAbsReal(det); /* a section's cells may be drawn either way round */
   }
   for (PetscInt a = 0; a < nb; ++a)
     for (PetscInt j = 0; j < 3; ++j) G[a * 3 + j] = dN[a * 3 + 0] * iJ[0 * 3 + j] + dN[a * 3 + 1] * iJ[1 * 3 + j]
       + dN[a * 3 + 2] * iJ[2 * 3 + j];
+  if (disc->axisymmetric) {
+    const PetscReal *N = disc->N + q * nb;
+    PetscReal        r = 0.0;
+    for (PetscInt a = 0; a < nb; ++a) r += N[a] * xc[3 * a];
+    /* quadrature points lie inside the cells, so r > 0 even on cells that touch the axis */
+    for (PetscInt a = 0; a < nb; ++a) hoop[a] = N[a] / r;
+    w *= 2.0 * PETSC_PI * r;
+  }
   return w;
 }

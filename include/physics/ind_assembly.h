@@ -40,6 +40,8 @@ PetscErrorCode IndAssemblyCreate(IndDisc disc, IndMaterials mats, IndHistory his
 PetscErrorCode IndAssemblyDestroy(IndAssembly *assembly);
 /* Whether the kinematics is of large deformation (-formulation finite). */
 PetscBool      IndAssemblyIsFiniteStrain(IndAssembly assembly);
+/* Whether its cells are an axisymmetric section (a 2D mesh). */
+PetscBool      IndAssemblyIsAxisymmetric(IndAssembly assembly);
 /* The discretisation it assembles on (borrowed). */
 IndDisc        IndAssemblyGetDisc(IndAssembly assembly);
 /* Quadrature points of this rank whose return map failed, and those yielding, in the last residual. */

@@ -12,7 +12,8 @@ static inline PetscReal L2(int node, PetscReal s)
 
 /* Adds to a[] (indexed like the local vector, z slot of each node) the projected tributary area
    int_face N_a |n_z| dA of every node of one face: the consistent nodal force of a unit pressure on
-   a flat face, for its own Lagrange basis (Q1/Q2 quads, P1/P2 triangles). The vertices are in the
+   a flat face, for its own Lagrange basis (Q1/Q2 quads, P1/P2 triangles, and on an axisymmetric section
+   2- and 3-node edges, whose surface of revolution has dA = 2 pi r ds). The vertices are in the
    cyclic order of the face's closure; edge nodes are identified by their two vertices. */
 static PetscErrorCode FaceAreas(DM dm, PetscSection s, PetscInt face, const PetscReal *vx, PetscInt nv,
   PetscInt degree, PetscScalar *a)
@@ -42,6 +43,8 @@ static PetscErrorCode FaceAreas(DM dm, PetscSection s, PetscInt face, const Pets
       if (nv == 4) {
         const PetscReal c[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
         ref[nn][0] = c[k][0], ref[nn][1] = c[k][1];
+      } else if (nv == 2) {
+        ref[nn][0] = (PetscReal)k, ref[nn][1] = 0;
       } else {
         const PetscReal c[3][2] = {{0, 0}, {1, 0}, {0, 1}};
         ref[nn][0] = c[k][0], ref[nn][1] = c[k][1];
@@ -56,6 +59,8 @@ static PetscErrorCode FaceAreas(DM dm, PetscSection s, PetscInt face, const Pets
       if (nv == 4) {
         const PetscReal c[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
         c0[0] = c[k0][0], c0[1] = c[k0][1], c1[0] = c[k1][0], c1[1] = c[k1][1];
+      } else if (nv == 2) {
+        c0[0] = (PetscReal)k0, c1[0] = (PetscReal)k1, c0[1] = c1[1] = 0;
       } else {
         const PetscReal c[3][2] = {{0, 0}, {1, 0}, {0, 1}};
         c0[0] = c[k0][0], c0[1] = c[k0][1], c1[0] = c[k1][0], c1[1] = c[k1][1];
@@ -69,7 +74,20 @@ static PetscErrorCode FaceAreas(DM dm, PetscSection s, PetscInt face, const Pets
   }
   PetscCall(DMPlexRestoreTransitiveClosure(dm, face, PETSC_TRUE, &ncl, &closure));
 
-  if (nv == 4) {
+  if (nv == 2) {
+    /* the edge s in [0, 1] from vertex 0 to vertex 1: 3 Gauss points integrate N_a r exactly */
+    const PetscReal g[3] = {0.1127016653792583, 0.5, 0.8872983346207417}, w[3] = {5.0 / 18, 8.0 / 18, 5.0 / 18};
+    const PetscReal dr = PetscAbsReal(vx[3] - vx[0]);
+    for (int q = 0; q < 3; ++q) {
+      const PetscReal r = (1 - g[q]) * vx[0] + g[q] * vx[3];
+      for (PetscInt b = 0; b < nn; ++b) {
+        PetscReal N;
+        if (degree == 1) N = ref[b][0] > 0.5 ? g[q] : 1 - g[q];
+        else N = L2((int)PetscFloorReal(2 * ref[b][0] + 0.5), 2 * g[q] - 1);
+        a[off[b] + 2] += w[q] * 2 * PETSC_PI * r * dr * N;
+      }
+    }
+  } else if (nv == 4) {
     const PetscReal g[3] = {-0.7745966692414834, 0.0, 0.7745966692414834}, w[3] = {5.0 / 9, 8.0 / 9, 5.0 / 9};
     const PetscReal c[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
     for (int i = 0; i < 3; ++i)
@@ -113,9 +131,15 @@ static PetscErrorCode FaceAreas(DM dm, PetscSection s, PetscInt face, const Pets
 
 /* Adds to slot 1 of each node of one face (vertices in cyclic order, vx their coordinates) the face's
    interior angle at the node: at a corner the angle between its edges, pi at an edge node, 2 pi at a
-   face's centre node. Summed over the surface, a node inside it gets 2 pi, one on its boundary less. */
+   face's centre node. Summed over the surface, a node inside it gets 2 pi, one on its boundary less.
+   An edge of an axisymmetric section gives pi to each end: its inner vertices get 2 pi too. */
 static void FaceAngles(const PetscInt *voff, PetscInt nv, const PetscReal *vx, PetscScalar *a)
 {
+  if (nv == 2) {
+    a[voff[0] + 1] += PETSC_PI;
+    a[voff[1] + 1] += PETSC_PI;
+    return;
+  }
   for (PetscInt k = 0; k < nv; ++k) {
     const PetscReal *p = vx + 3 * k, *prev = vx + 3 * ((k + nv - 1) % nv), *next = vx + 3 * ((k + 1) % nv);
     PetscReal        e1[3], e2[3], d = 0, l1 = 0, l2 = 0;
@@ -185,12 +209,14 @@ static PetscErrorCode SurfaceNodes(IndMesh mesh, IndDisc disc, const char surfac
         if (closure[2 * j] >= vStart && closure[2 * j] < vEnd && nv < 4) {
           for (int d = 0; d < 3; ++d) uv[3 * nv + d] = u ? PetscRealPart(u[o + d]) : 0.0;
           voff[nv++] = o;
-        } else a[o + 1] += closure[2 * j] >= eStart && closure[2 * j] < eEnd ? PETSC_PI : 2 * PETSC_PI;
+        } else a[o + 1] += closure[2 * j] >= eStart && closure[2 * j] < eEnd && closure[2 * j] != f[i] ? PETSC_PI
+                                                                                                      : 2 * PETSC_PI;
       }
       PetscCall(DMPlexRestoreTransitiveClosure(dm, f[i], PETSC_TRUE, &ncl, &closure));
       PetscCall(DMPlexVecGetClosure(cdm, cs, X, f[i], &nc, &xc));
-      PetscCheck(nc == 9 || nc == 12, PETSC_COMM_SELF, PETSC_ERR_SUP,
-        "Contact surface '%s': faces must be flat triangles or quadrilaterals with straight edges", surface);
+      PetscCheck(nc == 6 || nc == 9 || nc == 12, PETSC_COMM_SELF, PETSC_ERR_SUP,
+        "Contact surface '%s': faces must be flat triangles or quadrilaterals (straight edges on an axisymmetric "
+        "section)", surface);
       PetscCheck(3 * nv == nc, PETSC_COMM_SELF, PETSC_ERR_PLIB,
                  "Contact surface '%s': face with %" PetscInt_FMT " vertices and %" PetscInt_FMT " coordinates",
                  surface, nv, nc);
@@ -274,6 +300,22 @@ static PetscErrorCode CheckRotation(MPI_Comm comm, PetscInt nspec, const IndBCSp
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The axisymmetric model represents indenters of revolution on the axis r = 0, and the whole ring. */
+static PetscErrorCode CheckAxisymmetric(MPI_Comm comm, const IndIndenter *ind, PetscBool has_sym)
+{
+  PetscFunctionBeginUser;
+  PetscCheck(!ind->nfaces, comm, PETSC_ERR_SUP,
+    "-indenter_type %s is a pyramid, which the axisymmetric model (a 2D mesh) cannot represent; the cone of the same "
+    "projected area is -indenter_type cone -indenter_angle %s, or use a 3D mesh", IndIndenterTypes[ind->type],
+    ind->type == IND_INDENTER_CUBE_CORNER ? "42.28" : "70.3");
+  PetscCheck(ind->axis[0] == 0 && ind->axis[1] == 0, comm, PETSC_ERR_SUP,
+    "-indenter_axis %g,%g: on the axisymmetric model (a 2D mesh) the indenter's axis is the mesh's axis r = 0; an "
+    "indenter off the axis needs a 3D mesh", (double)ind->axis[0], (double)ind->axis[1]);
+  PetscCheck(!has_sym, comm, PETSC_ERR_ARG_WRONG,
+    "-contact_symmetry_factor does not apply to the axisymmetric model (a 2D mesh): its loads are the whole ring's");
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* Which contact nodes lie on the edge of the modelled surface (its boundary, less the parts on
    symmetry planes, where the body goes on in the mirror image), the lowest point of the mesh and the
    surface's projected area (times the symmetry factor): what the run's checks compare with
@@ -307,6 +349,8 @@ static PetscErrorCode SurfaceEdgeAndSize(IndContact c, PetscInt nspec, const Ind
       c->extent[2 * d + 1] = PetscMax(c->extent[2 * d + 1], c->X[3 * i + d]);
     }
     area += c->A[i];
+    /* the axis is no edge of a section: the surface goes on round it */
+    if (c->axisymmetric && PetscAbsReal(c->X[3 * i]) <= 1e-10 * (1 + scale)) c->edge[i] = PETSC_FALSE;
     for (PetscInt k = 0; k < nspec && c->edge[i]; ++k) {
       PetscBool sym;
       PetscCall(PetscStrcmp(spec[k].option, "-bc_symmetry", &sym));
@@ -440,9 +484,11 @@ PetscErrorCode IndContactCreate(IndMesh mesh, IndDisc disc, IndBC bc, IndContact
   /* Consistent nodal forces of a pressure vanish at the corner nodes of a 6-node triangle, so a
      node-to-surface contact cannot represent a smooth pressure there (and negative ones would be
      needed by 20-node serendipity faces). Q2 Lagrange faces have positive weights. */
-  PetscCheck(!(L->simplex && L->degree == 2), comm, PETSC_ERR_SUP,
+  PetscCheck(!(L->simplex && L->degree == 2 && !L->axisymmetric), comm, PETSC_ERR_SUP,
     "Contact on P2 tetrahedra is not supported: the consistent nodal forces of a pressure are zero at the corners of "
     "their 6-node faces. Use P1 tetrahedra or Q1/Q2 hexahedra for the contact region");
+
+  if (L->axisymmetric) PetscCall(CheckAxisymmetric(comm, &ind, has_sym));
 
   /* The owned nodes of the contact surface, their positions and tributary areas. */
   {
@@ -487,8 +533,10 @@ PetscErrorCode IndContactCreate(IndMesh mesh, IndDisc disc, IndBC bc, IndContact
   PetscCall(VecDestroy(&nodes));
   PetscCall(VecDestroy(&G));
   c->indenter = ind;
-  c->symmetry = has_sym ? symmetry : SymmetryFactor(nspec, spec, &ind);
-  c->mirror   = MirrorPlanes(nspec, spec, &ind);
+  /* a section's residual is already that of the whole ring: its radial forces cancel round the axis */
+  c->symmetry = has_sym ? symmetry : L->axisymmetric ? 1.0 : SymmetryFactor(nspec, spec, &ind);
+  c->mirror   = L->axisymmetric ? 3 : MirrorPlanes(nspec, spec, &ind);
+  c->axisymmetric = L->axisymmetric;
   c->axis_c[0] = ind.axis[0];
   c->axis_c[1] = ind.axis[1];
   if (!IndHelpListing()) PetscCall(CheckRotation(comm, nspec, spec, &ind, rotation));

@@ -46,14 +46,16 @@ PetscErrorCode IndContactCheckArea(IndContact c, PetscReal area_hc, char warning
 
 void IndContactCheckResolved(IndContact c, PetscInt nodes, PetscInt min_nodes, char why[], size_t len)
 {
-  const PetscReal whole = c->symmetry * (PetscReal)nodes;
+  /* a section's contact nodes are rings, each one node spacing further out: n of them resolve the contact radius
+     as well as the pi n^2 nodes a 3D surface would need */
+  const PetscReal whole = c->axisymmetric ? PETSC_PI * nodes * nodes : c->symmetry * (PetscReal)nodes;
 
   why[0] = 0;
   if (whole < (PetscReal)min_nodes)
     snprintf(why, len,
              "H and E_r withheld: at P_max %" PetscInt_FMT " nodes touch the indenter (about %.0f over the whole "
-             "indent), "
-             "fewer than -op_min_contact_nodes %" PetscInt_FMT ": %.1f node spacings across the contact radius do not "
-             "resolve its area; indent deeper or refine the mesh under the tip",
-             nodes, (double)whole, min_nodes, (double)PetscSqrtReal(whole / PETSC_PI));
+             "indent%s), fewer than -op_min_contact_nodes %" PetscInt_FMT ": %.1f node spacings across the contact "
+             "radius do not resolve its area; indent deeper or refine the mesh under the tip",
+             nodes, (double)whole, c->axisymmetric ? " of a 3D mesh as fine" : "", min_nodes,
+             (double)PetscSqrtReal(whole / PETSC_PI));
 }

@@ -35,6 +35,7 @@ struct _p_IndContact {
   PetscInt    max_outer;
   PetscBool   monitor;
   PetscReal   symmetry; /* load multiplier of a half (2) or quarter (4) model */
+  PetscBool   axisymmetric; /* a 2D section: x is the radius, loads and areas are the whole ring's */
   PetscInt    n;        /* owned contact nodes */
   PetscInt   *row;      /* index of each node's x dof in the owned part of a global vector */
   PetscInt   *grow;     /* its global row */

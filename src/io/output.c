@@ -58,11 +58,11 @@ static PetscErrorCode CreateTopology(IndOutput o, IS *topo)
   PetscInt     cStart, cEnd, vStart, vEnd, *conn, n = 0;
   /* DMPlex orders a hexahedron's top face the other way round from VTK, and its tetrahedra with the
      opposite orientation; these maps give VTK's positive-volume order. */
-  const PetscInt hex[8] = {0, 3, 2, 1, 4, 7, 6, 5}, tet[4] = {1, 0, 2, 3};
-  const PetscInt *perm = o->simplex ? tet : hex;
+  const PetscInt hex[8] = {0, 3, 2, 1, 4, 7, 6, 5}, tet[4] = {1, 0, 2, 3}, plane[4] = {0, 1, 2, 3};
+  const PetscInt *perm = o->planar ? plane : o->simplex ? tet : hex;
 
   PetscFunctionBeginUser;
-  o->corners = o->simplex ? 4 : 8;
+  o->corners = IndOutputCorners(o);
   PetscCall(DMGetGlobalSection(dm, &gs));
   PetscCall(DMPlexGetHeightStratum(dm, 0, &cStart, &cEnd));
   PetscCall(DMPlexGetDepthStratum(dm, 0, &vStart, &vEnd));
@@ -180,7 +180,10 @@ static PetscErrorCode WriteXdmf(IndOutput o, PetscReal time)
     {"contact_status", "Scalar", PETSC_FALSE, 1},
   };
   const PetscInt    nfields = (PetscInt)(sizeof(fields) / sizeof(fields[0])) - (o->contact ? 0 : 2);
-  const IndXdmfMesh mesh    = {"indent.h5", o->simplex, o->nvert, o->ncell};
+  const IndXdmfMesh mesh    = {"indent.h5",
+                               o->planar ? (o->simplex ? "Triangle" : "Quadrilateral")
+                                         : (o->simplex ? "Tetrahedron" : "Hexahedron"),
+                               IndOutputCorners(o), o->nvert, o->ncell};
   PetscReal        *info    = o->info + IND_OUTPUT_INFO * o->nsteps;
   IndXdmfStep      *steps;
   char              path[PETSC_MAX_PATH_LEN];
@@ -284,6 +287,7 @@ PetscErrorCode IndOutputCreate(IndMesh mesh, IndDisc disc, IndOutput *out)
   o->disc = disc;
   PetscCall(IndMeshGetDM(mesh, &o->dm));
   PetscCall(IndMeshIsSimplex(mesh, &o->simplex));
+  PetscCall(IndMeshIsAxisymmetric(mesh, &o->planar));
   PetscCall(IndMeshGetSource(mesh, &o->source));
   PetscCall(IndDiscGetLayout(disc, &o->layout));
   comm = PetscObjectComm((PetscObject)o->dm);

@@ -6,7 +6,8 @@
 struct _p_IndOutput {
   IndDisc              disc;
   DM                   dm;      /* the mesh's, which carries the displacement (borrowed) */
-  PetscBool            simplex; /* tetrahedra */
+  PetscBool            simplex; /* tetrahedra or triangles */
+  PetscBool            planar;  /* triangles or quadrilaterals: an axisymmetric section */
   const char          *source;  /* the mesh file, or "box" (the mesh's) */
   const IndDiscLayout *layout;  /* the discretisation's */
   PetscBool   enabled;
@@ -44,3 +45,9 @@ PetscErrorCode IndOutputOpenResumed(IndOutput out);
 /* VecView of a vertex (cells false) or cell field, in the file's order when the file was resumed. */
 PetscErrorCode IndOutputViewField(IndOutput out, Vec x, PetscBool cells);
 PetscErrorCode IndOutputPermDestroy(IndOutput out);
+
+/* Vertices per cell: tetrahedra 4, hexahedra 8, triangles 3, quadrilaterals 4. */
+static inline PetscInt IndOutputCorners(IndOutput o)
+{
+  return o->planar ? (o->simplex ? 3 : 4) : (o->simplex ? 4 : 8);
+}

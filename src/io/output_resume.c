@@ -136,7 +136,7 @@ PetscErrorCode IndOutputOpenResumed(IndOutput o)
   }
   o->nvert   = pm->N[0];
   o->ncell   = pm->N[1];
-  o->corners = o->simplex ? 4 : 8;
+  o->corners = IndOutputCorners(o);
   PetscCall(PetscViewerHDF5PushTimestepping(o->viewer));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -99,8 +99,8 @@ static void WriteStepGrid(FILE *fp, const IndXdmfMesh *m, PetscInt nfields, cons
   WriteInformation(fp, "depth_nm", s->depth);
   WriteInformation(fp, "load_uN", s->load);
   fprintf(fp, "<Topology TopologyType=\"%s\" NumberOfElements=\"%" PetscInt_FMT "\">\n",
-          m->simplex ? "Tetrahedron" : "Hexahedron", m->ncell);
-  WriteHDFItem(fp, "Int", (int)sizeof(PetscInt), m->ncell, m->simplex ? 4 : 8, m->h5name, "/topology/cells");
+          m->topology, m->ncell);
+  WriteHDFItem(fp, "Int", (int)sizeof(PetscInt), m->ncell, m->corners, m->h5name, "/topology/cells");
   fprintf(fp, "</Topology>\n<Geometry GeometryType=\"XYZ\">\n");
   WriteHDFItem(fp, "Float", (int)sizeof(PetscReal), m->nvert, 3, m->h5name, "/geometry/vertices");
   fprintf(fp, "</Geometry>\n");

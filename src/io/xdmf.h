@@ -30,7 +30,8 @@ typedef struct {
 
 typedef struct {
   const char *h5name; /* the HDF5 file's name relative to the XDMF file */
-  PetscBool   simplex; /* tetrahedra, else hexahedra */
+  const char *topology; /* XDMF's name of the cells: Tetrahedron, Hexahedron, Triangle, Quadrilateral */
+  PetscInt    corners;  /* vertices per cell */
   PetscInt    nvert, ncell;
 } IndXdmfMesh;
 

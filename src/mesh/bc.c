@@ -184,6 +184,30 @@ static PetscErrorCode ProjectWrapper(PetscInt dim, PetscReal t, const PetscReal 
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The axisymmetric model's own conditions, on top of the user's: the hoop displacement (y) is zero at every
+   node (torsionless), and the radial one (x) at every node on the axis r = 0, where a ring shrinks to a point. */
+static PetscErrorCode MarkAxisymmetricConditions(IndBC bc, Vec Mloc)
+{
+  const PetscScalar *x;
+  PetscScalar       *m;
+  PetscInt           n;
+  PetscReal          extent = 0;
+
+  PetscFunctionBeginUser;
+  PetscCall(VecGetLocalSize(Mloc, &n));
+  PetscCall(VecGetArrayRead(bc->disc->Xloc, &x));
+  for (PetscInt k = 0; k < n; ++k) extent = PetscMax(extent, PetscAbsReal(PetscRealPart(x[k])));
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &extent, 1, MPIU_REAL, MPIU_MAX, PetscObjectComm((PetscObject)bc->disc->dm)));
+  PetscCall(VecGetArray(Mloc, &m));
+  for (PetscInt k = 0; k < n; k += 3) {
+    m[k + 1] += 1.0;
+    if (PetscAbsReal(PetscRealPart(x[k])) <= 1e-10 * extent) m[k] += 1.0;
+  }
+  PetscCall(VecRestoreArray(Mloc, &m));
+  PetscCall(VecRestoreArrayRead(bc->disc->Xloc, &x));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* Constrained dofs are marked in local vectors and summed into global ones, so that a rank owning a
    node of a boundary face it does not hold itself still learns of the condition. Where several
    conditions meet on one dof their values are averaged; consistent inputs give one value. */
@@ -260,6 +284,7 @@ PetscErrorCode IndBCSetUp(IndBC bc)
     }
   }
   PetscCall(PetscFree(seen));
+  if (bc->disc->dim == 2) PetscCall(MarkAxisymmetricConditions(bc, Mloc));
 
   PetscCall(DMGetGlobalVector(dm, &M));
   PetscCall(DMGetGlobalVector(dm, &V));

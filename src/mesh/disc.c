@@ -12,6 +12,8 @@ static PetscErrorCode CacheReferenceTabulation(IndDisc disc)
   PetscCall(PetscFEGetCellTabulation(disc->fe, 1, &T));
   Nb = T->Nb;
   Nc = T->Nc;
+  PetscCheck(T->cdim == disc->dim, PETSC_COMM_SELF, PETSC_ERR_PLIB, "Tabulation of dimension %" PetscInt_FMT,
+    T->cdim);
   PetscCheck(Nc == 3 && Nb % 3 == 0, PETSC_COMM_SELF, PETSC_ERR_PLIB,
     "Unexpected vector basis layout (Nb %" PetscInt_FMT ", Nc %" PetscInt_FMT ")", Nb, Nc);
   disc->nb   = Nb / 3;
@@ -27,25 +29,25 @@ static PetscErrorCode CacheReferenceTabulation(IndDisc disc)
           "Vector basis is not node-major with interleaved components");
         else if (c == 0) {
           disc->N[q * disc->nb + b / 3] = v;
-          for (PetscInt d = 0; d < 3; ++d) disc->dN[(q * disc->nb + b / 3) * 3 + d] = T->T[1][((q * Nb + b) * Nc + c)
-            * 3 + d];
+          for (PetscInt d = 0; d < 3; ++d) disc->dN[(q * disc->nb + b / 3) * 3 + d] = d < disc->dim ?
+            T->T[1][((q * Nb + b) * Nc + c) * disc->dim + d] : 0.0;
         }
       }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Values (nq x nn) and reference gradients (nq x nn x 3) of the scalar Lagrange basis of the
-   coordinate field at the points of quad: degree 1, or 2 for second-order gmsh meshes, chosen by the
+/* Values (nq x nn) and reference gradients (nq x nn x 3, the third 0 on 2D cells) of the scalar Lagrange basis
+   of the coordinate field at the points of quad: degree 1, or 2 for second-order gmsh meshes, chosen by the
    number nn of coordinate nodes per cell. dNx may be NULL. */
-static PetscErrorCode CoordinateBasis(PetscBool simplex, PetscQuadrature quad, PetscInt nq, PetscInt nn, PetscReal **Nx,
-                                      PetscReal **dNx)
+static PetscErrorCode CoordinateBasis(PetscInt dim, PetscBool simplex, PetscQuadrature quad, PetscInt nq, PetscInt nn,
+                                      PetscReal **Nx, PetscReal **dNx)
 {
   PetscFunctionBeginUser;
   for (PetscInt k = 1; k <= 2; ++k) {
     PetscFE         fe;
     PetscTabulation T;
     PetscInt        nb;
-    PetscCall(PetscFECreateLagrange(PETSC_COMM_SELF, 3, 1, simplex, k, PETSC_DETERMINE, &fe));
+    PetscCall(PetscFECreateLagrange(PETSC_COMM_SELF, dim, 1, simplex, k, PETSC_DETERMINE, &fe));
     PetscCall(PetscFESetQuadrature(fe, quad));
     PetscCall(PetscFEGetDimension(fe, &nb));
     if (nb == nn) {
@@ -54,7 +56,8 @@ static PetscErrorCode CoordinateBasis(PetscBool simplex, PetscQuadrature quad, P
       PetscCall(PetscArraycpy(*Nx, T->T[0], nq * nn));
       if (dNx) {
         PetscCall(PetscMalloc1(nq * nn * 3, dNx));
-        PetscCall(PetscArraycpy(*dNx, T->T[1], nq * nn * 3));
+        for (PetscInt j = 0; j < nq * nn; ++j)
+          for (PetscInt d = 0; d < 3; ++d) (*dNx)[3 * j + d] = d < dim ? T->T[1][dim * j + d] : 0.0;
       }
       PetscCall(PetscFEDestroy(&fe));
       PetscFunctionReturn(PETSC_SUCCESS);
@@ -165,7 +168,7 @@ static PetscErrorCode NodePositions(IndDisc disc, PetscInt nn, PetscBool on_vert
     PetscReal      *ref, *Nx = NULL;
     /* each Lagrange node is the point of its evaluation functional; functional 3a is node a's */
     PetscCall(PetscFEGetDualSpace(disc->fe, &sp));
-    PetscCall(PetscMalloc1(disc->nb * 3, &ref));
+    PetscCall(PetscMalloc1(disc->nb * disc->dim, &ref));
     for (PetscInt a = 0; a < disc->nb; ++a) {
       PetscQuadrature  f;
       PetscInt         np;
@@ -173,11 +176,11 @@ static PetscErrorCode NodePositions(IndDisc disc, PetscInt nn, PetscBool on_vert
       PetscCall(PetscDualSpaceGetFunctional(sp, 3 * a, &f));
       PetscCall(PetscQuadratureGetData(f, NULL, NULL, &np, &pt, NULL));
       PetscCheck(np == 1, PETSC_COMM_SELF, PETSC_ERR_SUP, "Node %" PetscInt_FMT " is not a point evaluation", a);
-      for (int d = 0; d < 3; ++d) ref[3 * a + d] = pt[d];
+      for (PetscInt d = 0; d < disc->dim; ++d) ref[disc->dim * a + d] = pt[d];
     }
     PetscCall(PetscQuadratureCreate(PETSC_COMM_SELF, &nodes));
-    PetscCall(PetscQuadratureSetData(nodes, 3, 1, disc->nb, ref, NULL));
-    if (disc->ncell) PetscCall(CoordinateBasis(disc->simplex, nodes, disc->nb, nn, &Nx, NULL));
+    PetscCall(PetscQuadratureSetData(nodes, disc->dim, 1, disc->nb, ref, NULL));
+    if (disc->ncell) PetscCall(CoordinateBasis(disc->dim, disc->simplex, nodes, disc->nb, nn, &Nx, NULL));
     for (PetscInt i = 0; i < disc->ncell; ++i) {
       PetscScalar    *xc = NULL;
       PetscInt        nc;
@@ -220,7 +223,7 @@ static PetscErrorCode CheckGeometry(IndDisc disc, PetscQuadrature quad, PetscInt
   PetscCall(DMGetLocalSection(cdm, &cs));
   PetscCall(DMGetCoordinatesLocal(dm, &X));
   if (!own) {
-    PetscCall(CoordinateBasis(disc->simplex, quad, disc->nq, nn, &Nx, &dNx));
+    PetscCall(CoordinateBasis(disc->dim, disc->simplex, quad, disc->nq, nn, &Nx, &dNx));
     PetscCall(PetscMalloc2(disc->ncell * disc->nq, &disc->wdetJ, disc->ncell * disc->nq * 9, &disc->invJ));
   }
   PetscCall(PetscMalloc1(3 * n, &xc));
@@ -239,17 +242,15 @@ static PetscErrorCode CheckGeometry(IndDisc disc, PetscQuadrature quad, PetscInt
       PetscCall(DMPlexVecRestoreClosure(cdm, cs, X, c, &nc, &cl));
     }
     for (PetscInt q = 0; q < disc->nq; ++q) {
-      PetscReal J[9] = {0}, det;
-      for (PetscInt a = 0; a < n; ++a)
-        for (int d = 0; d < 3; ++d)
-          for (int k = 0; k < 3; ++k) J[3 * d + k] += xc[3 * a + d] * dN[(q * n + a) * 3 + k];
-      det = IndDet3(J);
-      PetscCheck(det > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG,
+      PetscReal J[9], det;
+      det = IndDiscJacobian(n, disc->dim == 2, xc, dN + q * n * 3, J);
+      /* a section's cells may be drawn either way round: only a degenerate one is wrong */
+      PetscCheck(disc->dim == 2 ? det != 0 : det > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG,
         "Cell %" PetscInt_FMT " is inverted or degenerate (det J = %g at quadrature point %" PetscInt_FMT ")", c,
         (double)det, q);
       if (!own) {
         IndInverse3(J, det, disc->invJ + (i * disc->nq + q) * 9);
-        disc->wdetJ[i * disc->nq + q] = disc->w[q] * det;
+        disc->wdetJ[i * disc->nq + q] = disc->w[q] * PetscAbsReal(det);
       }
     }
   }
@@ -262,9 +263,9 @@ static PetscErrorCode CheckGeometry(IndDisc disc, PetscQuadrature quad, PetscInt
 
 static void SyncLayout(IndDisc disc)
 {
-  disc->layout = (IndDiscLayout){disc->degree, disc->simplex, disc->nq,    disc->nb,   disc->ndof,
-                                 disc->w,      disc->N,       disc->dN,    disc->ncell, disc->cStart,
-                                 disc->lidx,   disc->gidx,    disc->wdetJ, disc->invJ};
+  disc->layout = (IndDiscLayout){disc->degree, disc->simplex, disc->dim == 2, disc->nq,    disc->nb,
+                                 disc->ndof,   disc->w,       disc->N,       disc->dN,    disc->ncell,
+                                 disc->cStart, disc->lidx,    disc->gidx,    disc->wdetJ, disc->invJ};
 }
 
 PetscErrorCode IndDiscCreate(IndMesh mesh, IndDisc *out)
@@ -278,6 +279,7 @@ PetscErrorCode IndDiscCreate(IndMesh mesh, IndDisc *out)
   PetscCall(PetscCalloc1(1, &disc));
   disc->dm     = mesh->dm;
   disc->degree = 1;
+  PetscCall(DMGetDimension(disc->dm, &disc->dim));
   PetscOptionsBegin(comm, NULL, IND_TITLE "Discretisation (-disc_*)", "Disc");
   PetscCall(IndOptionsInt("-disc_degree", "Polynomial degree of the displacement: 1 (P1/Q1) or 2 (P2/Q2)", NULL,
     disc->degree, &disc->degree, NULL));
@@ -286,14 +288,15 @@ PetscErrorCode IndDiscCreate(IndMesh mesh, IndDisc *out)
   PetscOptionsEnd();
   /* The strain of a P1 tetrahedron is constant, so one point integrates its stiffness, stress and
      history exactly; PETSc's default rule has 8, all in the same state, at 8 times the cost of
-     every residual, Jacobian and history update. */
-  if (qorder == PETSC_DETERMINE && mesh->simplex && disc->degree == 1) qorder = 0;
+     every residual, Jacobian and history update. (Not so on an axisymmetric section: the hoop strain
+     u_r / r varies over a triangle.) */
+  if (qorder == PETSC_DETERMINE && mesh->simplex && disc->degree == 1 && disc->dim == 3) qorder = 0;
   PetscCheck(disc->degree == 1 || disc->degree == 2, comm, PETSC_ERR_ARG_OUTOFRANGE,
     "-disc_degree must be 1 or 2, got %" PetscInt_FMT, disc->degree);
   PetscCheck(qorder == PETSC_DETERMINE || (qorder >= 0 && qorder <= 12), comm, PETSC_ERR_ARG_OUTOFRANGE,
     "-disc_quadrature_order must lie in [0, 12], got %" PetscInt_FMT, qorder);
 
-  PetscCall(PetscFECreateLagrange(comm, 3, 3, mesh->simplex, disc->degree, qorder, &disc->fe));
+  PetscCall(PetscFECreateLagrange(comm, disc->dim, 3, mesh->simplex, disc->degree, qorder, &disc->fe));
   PetscCall(PetscObjectSetName((PetscObject)disc->fe, "displacement"));
   PetscCall(DMSetField(disc->dm, 0, NULL, (PetscObject)disc->fe));
   PetscCall(DMCreateDS(disc->dm));
@@ -339,7 +342,7 @@ PetscErrorCode IndDiscQuadraturePoints(IndDisc disc, PetscReal **xq)
     PetscCall(DMPlexVecGetClosure(cdm, cs, X, disc->cStart + i, &nc, &xc));
     if (!Nx) {
       nn = nc / 3;
-      PetscCall(CoordinateBasis(disc->simplex, quad, disc->nq, nn, &Nx, NULL));
+      PetscCall(CoordinateBasis(disc->dim, disc->simplex, quad, disc->nq, nn, &Nx, NULL));
     }
     for (PetscInt q = 0; q < disc->nq; ++q)
       for (int d = 0; d < 3; ++d) {

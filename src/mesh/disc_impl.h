@@ -8,12 +8,13 @@ struct _p_IndDisc {
   PetscFE          fe;
   PetscInt         degree;
   PetscBool        simplex;
+  PetscInt         dim;   /* of the cells: 3, or 2 for the axisymmetric model */
   PetscInt         nq;    /* quadrature points per cell */
   PetscInt         nb;    /* scalar basis functions (nodes) per cell */
   PetscInt         ndof;  /* 3 * nb */
   const PetscReal *w;     /* reference quadrature weights (owned by the quadrature) */
   PetscReal       *N;     /* nq x nb reference shape function values */
-  PetscReal       *dN;    /* nq x nb x 3 reference gradients */
+  PetscReal       *dN;    /* nq x nb x 3 reference gradients (the third 0 on 2D cells) */
   PetscInt         ncell; /* local cells, numbered cStart + i */
   PetscInt         cStart;
   PetscInt        *lidx;  /* ncell x ndof local-vector indices, closure order */

@@ -72,6 +72,12 @@ static PetscErrorCode ReadGmshPhysicalNames(MPI_Comm comm, const char file[], In
   PetscCallMPI(MPI_Bcast(dims, n, MPI_INT, 0, comm));
   PetscCallMPI(MPI_Bcast(tags, n, MPI_INT, 0, comm));
   PetscCallMPI(MPI_Bcast(names, n * IND_NAME_LEN, MPI_CHAR, 0, comm));
+  {
+    /* A 2D mesh's physical surfaces are its volumes (of revolution) and its physical curves its surfaces. */
+    PetscInt mdim;
+    PetscCall(DMGetDimension(mesh->dm, &mdim));
+    for (int k = 0; k < n; ++k) dims[k] += 3 - (int)mdim;
+  }
 
   /* Regions in the file without a physical name still get a usable name. */
   for (PetscInt d = 2; d <= 3; ++d) {
@@ -197,25 +203,67 @@ static PetscErrorCode CreateBoxMesh(MPI_Comm comm, IndMesh mesh)
 /* Decided on the serial mesh: after distribution a rank may hold no cell. */
 static PetscErrorCode CheckCellTypes(MPI_Comm comm, IndMesh mesh)
 {
-  PetscInt dim, cStart, cEnd, flags[2] = {0, 0}; /* tets, hexes */
+  PetscInt dim, cStart, cEnd, flags[2] = {0, 0}; /* simplices, tensor cells */
 
   PetscFunctionBeginUser;
   PetscCall(DMGetDimension(mesh->dm, &dim));
-  PetscCheck(dim == 3, comm, PETSC_ERR_ARG_WRONG, "Mesh '%s' is %" PetscInt_FMT "D; indent needs a 3D mesh",
+  PetscCheck(dim == 3 || dim == 2, comm, PETSC_ERR_ARG_WRONG,
+    "Mesh '%s' is %" PetscInt_FMT "D; indent needs a 3D mesh, or a 2D one in (r, z) for the axisymmetric model",
     mesh->source, dim);
+  mesh->dim = dim;
   PetscCall(DMPlexGetHeightStratum(mesh->dm, 0, &cStart, &cEnd));
   for (PetscInt c = cStart; c < cEnd; ++c) {
     DMPolytopeType ct;
     PetscCall(DMPlexGetCellType(mesh->dm, c, &ct));
-    if (ct == DM_POLYTOPE_TETRAHEDRON) flags[0] = 1;
-    else if (ct == DM_POLYTOPE_HEXAHEDRON) flags[1] = 1;
-    else SETERRQ(comm, PETSC_ERR_SUP, "Mesh '%s' has a cell of type %s; only tetrahedra and hexahedra are supported",
-      mesh->source, DMPolytopeTypes[ct]);
+    if (ct == (dim == 3 ? DM_POLYTOPE_TETRAHEDRON : DM_POLYTOPE_TRIANGLE)) flags[0] = 1;
+    else if (ct == (dim == 3 ? DM_POLYTOPE_HEXAHEDRON : DM_POLYTOPE_QUADRILATERAL)) flags[1] = 1;
+    else SETERRQ(comm, PETSC_ERR_SUP, "Mesh '%s' has a cell of type %s; only %s are supported", mesh->source,
+      DMPolytopeTypes[ct], dim == 3 ? "tetrahedra and hexahedra" : "triangles and quadrilaterals (axisymmetric)");
   }
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, flags, 2, MPIU_INT, MPI_MAX, comm));
-  PetscCheck(flags[0] + flags[1] == 1, comm, PETSC_ERR_SUP,
-    "Mesh '%s' mixes tetrahedra and hexahedra (or has no cells)", mesh->source);
+  PetscCheck(flags[0] + flags[1] == 1, comm, PETSC_ERR_SUP, "Mesh '%s' mixes %s (or has no cells)", mesh->source,
+    dim == 3 ? "tetrahedra and hexahedra" : "triangles and quadrilaterals");
   mesh->simplex = flags[0] ? PETSC_TRUE : PETSC_FALSE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* A 2D mesh is the axisymmetric model's section (r, z). gmsh draws it in the plane z = 0 with y the axis (as
+   Abaqus and FEniCS do), or in the plane y = 0; either way it is placed in y = 0 with x = r and z the axis, so
+   that the indenter, the contact and the outputs see the section of the 3D body through its axis. */
+static PetscErrorCode PlaceSectionInXZ(MPI_Comm comm, IndMesh mesh)
+{
+  DM           dm = mesh->dm;
+  Vec          X;
+  PetscScalar *x;
+  PetscInt     n, cdim;
+  PetscReal    ext[3] = {0, 0, 0}, rmin = PETSC_MAX_REAL, tol;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMGetCoordinateDim(dm, &cdim));
+  PetscCheck(cdim == 3, comm, PETSC_ERR_PLIB, "2D mesh '%s' read with %" PetscInt_FMT " coordinates", mesh->source,
+    cdim);
+  PetscCall(DMGetCoordinatesLocal(dm, &X));
+  PetscCall(VecGetLocalSize(X, &n));
+  PetscCall(VecGetArray(X, &x));
+  for (PetscInt k = 0; k < n; ++k) ext[k % 3] = PetscMax(ext[k % 3], PetscAbsReal(PetscRealPart(x[k])));
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, ext, 3, MPIU_REAL, MPIU_MAX, comm));
+  tol = 1e-12 * (ext[0] + ext[1] + ext[2]);
+  PetscCheck(ext[1] <= tol || ext[2] <= tol, comm, PETSC_ERR_ARG_WRONG,
+    "2D mesh '%s' is not plane: an axisymmetric section must lie in the plane z = 0 (x = r, y the axis) or y = 0",
+    mesh->source);
+  for (PetscInt k = 0; k < n; k += 3) {
+    if (ext[2] <= tol) { /* drawn in z = 0: y is the axis */
+      x[k + 2] = x[k + 1];
+      x[k + 1] = 0;
+    }
+    rmin = PetscMin(rmin, PetscRealPart(x[k]));
+  }
+  PetscCall(VecRestoreArray(X, &x));
+  PetscCall(DMSetCoordinatesLocal(dm, X));
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &rmin, 1, MPIU_REAL, MPIU_MIN, comm));
+  PetscCheck(rmin >= -tol, comm, PETSC_ERR_ARG_WRONG,
+    "2D mesh '%s' reaches x = %g: an axisymmetric section lies at x = r >= 0, its axis at x = 0", mesh->source,
+    (double)rmin);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -276,6 +324,7 @@ static PetscErrorCode PerturbInteriorVertices(IndMesh mesh, PetscReal frac)
     for (int d = 0; d < 3; ++d) h = SplitMix64(h ^ (uint64_t)(int64_t)round(PetscRealPart(x[off + d]) / hmin * 1e6));
     for (int d = 0; d < 3; ++d) {
       h = SplitMix64(h);
+      if (mesh->dim == 2 && d == 1) continue; /* an axisymmetric section stays in its plane */
       x[off + d] += frac * hmin * ((PetscReal)(h >> 11) / 9007199254740992.0 - 0.5);
     }
   }
@@ -336,9 +385,12 @@ static PetscErrorCode ReadMeshFile(MPI_Comm comm, const char file[], DM *dm)
   char          *specific = NULL;
 
   PetscFunctionBeginUser;
+  /* three coordinates also for a 2D mesh, the axisymmetric section (PlaceSectionInXZ) */
+  PetscCall(PetscOptionsSetValue(NULL, "-dm_plex_gmsh_spacedim", "3"));
   PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
   ierr = DMPlexCreateFromFile(comm, file, "indent", PETSC_TRUE, dm);
   PetscCall(PetscPopErrorHandler());
+  PetscCall(PetscOptionsClearValue(NULL, "-dm_plex_gmsh_spacedim"));
   if (ierr) PetscCall(PetscErrorMessage(ierr, NULL, &specific));
   PetscCheck(!ierr, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "Cannot read mesh file '%s' (-mesh_file): %s", file,
     specific && specific[0] ? specific : "PETSc's gmsh reader failed");
@@ -463,6 +515,7 @@ PetscErrorCode IndMeshCreate(MPI_Comm comm, IndMesh *out)
   } else if (!has_file) PetscCall(CreateBoxMesh(comm, mesh));
   PetscCall(PetscObjectSetName((PetscObject)mesh->dm, "mesh"));
   PetscCall(CheckCellTypes(comm, mesh));
+  if (mesh->dim == 2) PetscCall(PlaceSectionInXZ(comm, mesh));
   /* On the serial mesh, where every boundary face is plainly one, so any rank count gets the same mesh. */
   if (perturb > 0) PetscCall(PerturbInteriorVertices(mesh, perturb));
   PetscCall(PetscLogEventEnd(IndLog.mesh_create, 0, 0, 0, 0));
@@ -559,6 +612,7 @@ PetscErrorCode IndMeshCheckRegionNotEmpty(IndMesh mesh, const char name[], Petsc
 
 IND_GETTER_OUT(DM, IndMeshGetDM, IndMesh, o->dm)
 IND_GETTER_OUT(PetscBool, IndMeshIsSimplex, IndMesh, o->simplex)
+IND_GETTER_OUT(PetscBool, IndMeshIsAxisymmetric, IndMesh, o->dim == 2 ? PETSC_TRUE : PETSC_FALSE)
 
 PetscErrorCode IndMeshGetRegions(IndMesh mesh, PetscInt *n, const IndRegion **regions)
 {

@@ -5,7 +5,8 @@
 
 struct _p_IndMesh {
   DM        dm;        /* owned; distributed; each region is a DMLabel of that name with value 1 */
-  PetscBool simplex;   /* tetrahedra (true) or hexahedra (false); the same on every rank */
+  PetscBool simplex;   /* tetrahedra or triangles (true), hexahedra or quadrilaterals (false); the same on every rank */
+  PetscInt  dim;       /* 3, or 2: the axisymmetric model, a mesh in (r, z) placed in the plane y = 0 */
   PetscInt  nregions;
   IndRegion regions[IND_MAX_REGIONS];
   char      source[PETSC_MAX_PATH_LEN]; /* mesh file, or "box" */

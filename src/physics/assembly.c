@@ -39,6 +39,8 @@ PetscErrorCode IndAssemblyCreate(IndDisc disc, IndMaterials mats, IndHistory his
   PetscOptionsEnd();
   PetscCall(PetscMalloc7(nd, &a->ue, nd, &a->xe, nd, &a->fe, nd * nd, &a->Ke, a->layout->nb * 3, &a->G, 6 * nd, &a->DB,
                          6 * nd, &a->B));
+  PetscCall(PetscCalloc1(a->layout->nb, &a->hoop));
+  a->khoop = a->layout->axisymmetric ? a->hoop : NULL;
   *out = a;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -48,6 +50,7 @@ PetscErrorCode IndAssemblyDestroy(IndAssembly *a)
   PetscFunctionBeginUser;
   if (!*a) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(PetscFree7((*a)->ue, (*a)->xe, (*a)->fe, (*a)->Ke, (*a)->G, (*a)->DB, (*a)->B));
+  PetscCall(PetscFree((*a)->hoop));
   PetscCall(PetscFree((*a)->xq));
   PetscCall(IndMatInsertDestroy(&(*a)->insert));
   PetscCall(PetscFree(*a));
@@ -94,7 +97,7 @@ static PetscErrorCode PointLoop(IndAssembly a, Vec Uloc, Vec Floc)
     GatherCell(a, i, u, xn);
     PetscCall(PetscArrayzero(a->fe, disc->ndof));
     for (PetscInt q = 0; q < nq; ++q) {
-      const PetscReal  w   = IndDiscGradients(disc, i, a->xe, q, a->G);
+      const PetscReal  w   = IndDiscGradients(disc, i, a->xe, q, a->G, a->hoop);
       PetscReal       *h   = hist + i * stride + q * IND_HISTORY_NVAL;
       /* P: first Piola-Kirchhoff stress; at small strain the stress */
       PetscReal        P[9], dp, old[IND_HISTORY_NVAL];
@@ -102,7 +105,7 @@ static PetscErrorCode PointLoop(IndAssembly a, Vec Uloc, Vec Floc)
       IndPlasticStatus status;
 
       PetscCall(PetscArraycpy(old, h, IND_HISTORY_NVAL));
-      status = a->kin->stress(m, a->tangent, nb, a->G, a->ue, old, trial, P, &dp);
+      status = a->kin->stress(m, a->tangent, nb, a->G, a->khoop, a->ue, old, trial, P, &dp);
       if (status != IND_PLASTIC_OK) {
         a->nfailed++;
         continue;
@@ -112,6 +115,7 @@ static PetscErrorCode PointLoop(IndAssembly a, Vec Uloc, Vec Floc)
       for (PetscInt b = 0; b < nb; ++b) {
         const PetscReal gx = a->G[3 * b], gy = a->G[3 * b + 1], gz = a->G[3 * b + 2];
         for (int r = 0; r < 3; ++r) a->fe[3 * b + r] += w * (gx * P[3 * r] + gy * P[3 * r + 1] + gz * P[3 * r + 2]);
+        if (a->khoop) a->fe[3 * b] += w * a->khoop[b] * P[4]; /* the hoop stress against u_r / r */
       }
       if (a->body_force) {
         PetscReal bf[3];
@@ -171,11 +175,11 @@ PetscErrorCode IndAssemblyJacobian(IndAssembly a, Vec Uloc, Mat J)
     GatherCell(a, i, u, xn);
     PetscCall(PetscArrayzero(a->Ke, nd * nd));
     for (PetscInt q = 0; q < nq; ++q) {
-      const PetscReal  w   = IndDiscGradients(disc, i, a->xe, q, a->G);
+      const PetscReal  w   = IndDiscGradients(disc, i, a->xe, q, a->G, a->hoop);
       const PetscReal *old = hold + i * stride + q * IND_HISTORY_NVAL;
       /* A failed point was already reported by the residual at this displacement, which stops the
          Newton iteration before any Jacobian; its NaN tangent cannot go unnoticed either. */
-      (void)a->kin->stiffness(m, a->tangent, nb, a->G, a->ue, old, w, a->B, a->DB, a->Ke);
+      (void)a->kin->stiffness(m, a->tangent, nb, a->G, a->khoop, a->ue, old, w, a->B, a->DB, a->Ke);
     }
     for (PetscInt r = 1; r < nd; ++r)
       for (PetscInt c = 0; c < r; ++c) a->Ke[r * nd + c] = a->Ke[c * nd + r];
@@ -275,9 +279,9 @@ PetscErrorCode IndAssemblyCellAverages(IndAssembly a, Vec Uloc, IndCellFields *o
     for (PetscInt q = 0; q < nq; ++q) {
       const PetscReal *h = hist + i * stride + q * IND_HISTORY_NVAL;
       const IndPlasticState *st = (const IndPlasticState *)h;
-      const PetscReal  w0 = IndDiscGradients(disc, i, a->xe, q, a->G);
+      const PetscReal  w0 = IndDiscGradients(disc, i, a->xe, q, a->G, a->hoop);
       PetscReal        eps[6], s[6], w = w0;
-      a->kin->fields(m, disc->nb, a->G, a->ue, h, s, eps, &w);
+      a->kin->fields(m, disc->nb, a->G, a->khoop, a->ue, h, s, eps, &w);
       /* stress and strain over the current volume (w: at finite strain w0 J); the material's own
          state (p, back stress, yielding) over the material, i.e. the reference volume */
       vol += w;
@@ -320,8 +324,8 @@ PetscErrorCode IndAssemblyCountInverted(IndAssembly a, Vec Uloc, PetscInt *ncell
     GatherCell(a, i, u, xn);
     for (PetscInt q = 0; q < nq; ++q) {
       PetscReal H[9], F[9], J;
-      (void)IndDiscGradients(disc, i, a->xe, q, a->G);
-      IndDeformationGradient(nb, a->G, a->ue, H, F);
+      (void)IndDiscGradients(disc, i, a->xe, q, a->G, a->hoop);
+      IndDeformationGradient(nb, a->G, a->khoop, a->ue, H, F);
       J = IndDet3(F);
       *jmin = PetscMin(*jmin, J);
       if (!(J > 0)) inverted = PETSC_TRUE;
@@ -348,6 +352,7 @@ PetscErrorCode IndAssemblyElasticJacobian(IndAssembly a, Vec Uloc, Mat K)
 }
 
 IND_GETTER(PetscBool, IndAssemblyIsFiniteStrain, IndAssembly, o->kin->large)
+IND_GETTER(PetscBool, IndAssemblyIsAxisymmetric, IndAssembly, o->layout->axisymmetric)
 IND_GETTER(IndDisc, IndAssemblyGetDisc, IndAssembly, o->disc)
 
 void IndAssemblyGetPointCounts(IndAssembly a, PetscInt *failed, PetscInt *plastic)

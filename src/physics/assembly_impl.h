@@ -18,6 +18,8 @@ struct _p_IndAssembly {
   PetscInt             nfailed;  /* local quadrature points whose return map failed, last residual */
   PetscInt             nplastic; /* local quadrature points yielding (dp > 0), last residual */
   PetscReal           *ue, *xe, *fe, *Ke, *G, *DB, *B; /* per-cell work arrays, allocated once */
+  PetscReal           *hoop;     /* nb: N_a / r at the point, on an axisymmetric section */
+  const PetscReal     *khoop;    /* what the kinematics get: hoop there, NULL in 3D */
   Mat                  J;        /* the matrix made by IndAssemblyCreateMatrix (borrowed) */
   IndMatInsert         insert;   /* and its cached insertion (NULL: MatSetValues) */
 };
@@ -61,33 +63,38 @@ static inline IndPlasticStatus MaterialResponse(const IndMaterial *m, IndTangent
 }
 
 /* The displacement gradient H = sum_a u_a (x) G_a and F = I + H, row-major (finite strain, and the
-   check for inverted cells). */
-static inline void IndDeformationGradient(PetscInt nb, const PetscReal *G, const PetscReal *u, PetscReal H[9],
-                                          PetscReal F[9])
+   check for inverted cells). On an axisymmetric section (hoop not NULL) y is the hoop direction:
+   H_yy = u_r / r = sum_a hoop_a u_a,x. */
+static inline void IndDeformationGradient(PetscInt nb, const PetscReal *G, const PetscReal *hoop, const PetscReal *u,
+                                          PetscReal H[9], PetscReal F[9])
 {
   for (int k = 0; k < 9; ++k) H[k] = 0.0;
   for (PetscInt a = 0; a < nb; ++a)
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) H[3 * i + j] += u[3 * a + i] * G[3 * a + j];
+  if (hoop)
+    for (PetscInt a = 0; a < nb; ++a) H[4] += hoop[a] * u[3 * a];
   for (int k = 0; k < 9; ++k) F[k] = H[k] + (k % 4 == 0 ? 1.0 : 0.0);
 }
 
 /* A kinematics (-formulation): the quadrature point's operations of the cell loops (assembly.c), registered
    by name in IndKinematicsRegistry. G holds the physical gradients (nb x 3) and ue the cell's displacements;
-   old the point's committed history, trial (if not NULL) receives its update. */
+   old the point's committed history, trial (if not NULL) receives its update. On an axisymmetric section hoop
+   holds N_a / r (nb), y being the hoop direction and u_y zero: the hoop strain u_x / r adds to H_yy, and a
+   test function's gradient e_x (x) G_a gains hoop_a e_y (x) e_y. hoop is NULL in 3D. */
 struct _IndKinematics {
   const char *name;
   /* the stress that the residual integrates against G: first Piola-Kirchhoff P (3x3, row-major) */
   IndPlasticStatus (*stress)(const IndMaterial *m, IndTangent tangent, PetscInt nb, const PetscReal *G,
-                             const PetscReal *ue, const PetscReal *old, PetscReal *trial, PetscReal P[9],
-                             PetscReal *dp);
+                             const PetscReal *hoop, const PetscReal *ue, const PetscReal *old, PetscReal *trial,
+                             PetscReal P[9], PetscReal *dp);
   /* Ke += w times the point's stiffness, on and above the diagonal; B and DB workspaces of 6 nd */
   IndPlasticStatus (*stiffness)(const IndMaterial *m, IndTangent tangent, PetscInt nb, const PetscReal *G,
-                                const PetscReal *ue, const PetscReal *old, PetscReal w, PetscReal *B, PetscReal *DB,
-                                PetscReal *Ke);
+                                const PetscReal *hoop, const PetscReal *ue, const PetscReal *old, PetscReal w,
+                                PetscReal *B, PetscReal *DB, PetscReal *Ke);
   /* Cauchy stress and strain of a committed point h; w holds the reference weight and becomes the current one */
-  void (*fields)(const IndMaterial *m, PetscInt nb, const PetscReal *G, const PetscReal *ue, const PetscReal *h,
-                 PetscReal sigma[6], PetscReal e[6], PetscReal *w);
+  void (*fields)(const IndMaterial *m, PetscInt nb, const PetscReal *G, const PetscReal *hoop, const PetscReal *ue,
+                 const PetscReal *h, PetscReal sigma[6], PetscReal e[6], PetscReal *w);
   /* large deformation: an inverted point fails the step, contact areas follow the deformed surface */
   PetscBool large;
 };

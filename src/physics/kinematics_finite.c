@@ -27,13 +27,13 @@ static inline IndPlasticStatus FinitePoint(const IndMaterial *m, IndTangent tang
 }
 
 static IndPlasticStatus Stress(const IndMaterial *m, IndTangent tangent, PetscInt nb, const PetscReal *G,
-                                      const PetscReal *ue, const PetscReal *old, PetscReal *trial, PetscReal P[9],
-                                      PetscReal *dp)
+                               const PetscReal *hoop, const PetscReal *ue, const PetscReal *old, PetscReal *trial,
+                               PetscReal P[9], PetscReal *dp)
 {
   PetscReal        H[9], F[9], S[6];
   IndPlasticStatus status;
 
-  IndDeformationGradient(nb, G, ue, H, F);
+  IndDeformationGradient(nb, G, hoop, ue, H, F);
   status = FinitePoint(m, tangent, H, old, trial, S, NULL, dp);
   if (status != IND_PLASTIC_OK) return status;
   /* P = F S = S + H S, summed so that small strains keep their digits */
@@ -50,10 +50,12 @@ static IndPlasticStatus Stress(const IndMaterial *m, IndTangent tangent, PetscIn
 }
 
 /* Ke += w (B^T DS B + geometric) on and above the diagonal, B the 6 x nd derivative of the
-   Green-Lagrange strain (engineering shears): column 3a+i of B is sym(F^T (e_i (x) G_a)). B and DS B are
-   stored by columns (Bt[6 k + r] = B[r][k]) so that each entry of Ke is one contiguous dot product. */
-static inline void AddFiniteStiffness(PetscInt nb, const PetscReal *G, const PetscReal F[9], const PetscReal S[6],
-                                      const PetscReal DS[36], PetscReal w, PetscReal *Bt, PetscReal *DBt, PetscReal *Ke)
+   Green-Lagrange strain (engineering shears): column 3a+i of B is sym(F^T dH), dH = e_i (x) G_a (plus
+   hoop_a e_y (x) e_y for i = x on an axisymmetric section). B and DS B are stored by columns (Bt[6 k + r] =
+   B[r][k]) so that each entry of Ke is one contiguous dot product. */
+static inline void AddFiniteStiffness(PetscInt nb, const PetscReal *G, const PetscReal *hoop, const PetscReal F[9],
+                                      const PetscReal S[6], const PetscReal DS[36], PetscReal w, PetscReal *Bt,
+                                      PetscReal *DBt, PetscReal *Ke)
 {
   const PetscInt nd = 3 * nb;
 
@@ -68,6 +70,11 @@ static inline void AddFiniteStiffness(PetscInt nb, const PetscReal *G, const Pet
       b[3] = F0 * gy + F1 * gx;
       b[4] = F1 * gz + F2 * gy;
       b[5] = F0 * gz + F2 * gx;
+      if (hoop && i == 0) { /* sym(F^T (e_y (x) e_y)) hoop_a: column y of F^T, in row and column y */
+        b[1] += F[4] * hoop[a];
+        b[3] += F[3] * hoop[a];
+        b[4] += F[5] * hoop[a];
+      }
       for (int r = 0; r < 6; ++r) {
         const PetscReal *Dr = DS + 6 * r;
         db[r] = w * (Dr[0] * b[0] + Dr[1] * b[1] + Dr[2] * b[2] + Dr[3] * b[3] + Dr[4] * b[4] + Dr[5] * b[5]);
@@ -90,32 +97,39 @@ static inline void AddFiniteStiffness(PetscInt nb, const PetscReal *G, const Pet
     for (PetscInt b = a; b < nb; ++b) {
       const PetscReal g = w * (Sg[0] * G[3 * b] + Sg[1] * G[3 * b + 1] + Sg[2] * G[3 * b + 2]);
       for (int i = 0; i < 3; ++i) Ke[(3 * a + i) * nd + 3 * b + i] += g;
+      if (hoop) {
+        /* S : sym(dH_ai^T dH_bj) with the hoop parts of dH: the (x, x), (y, x) and (x, y) pairs */
+        const PetscReal Sgb_y = S[3] * G[3 * b] + S[1] * G[3 * b + 1] + S[4] * G[3 * b + 2];
+        Ke[(3 * a) * nd + 3 * b] += w * hoop[a] * hoop[b] * S[1];
+        Ke[(3 * a) * nd + 3 * b + 1] += w * hoop[a] * Sgb_y;
+        if (b > a) Ke[(3 * a + 1) * nd + 3 * b] += w * hoop[b] * Sg[1];
+      }
     }
   }
 }
 
 static IndPlasticStatus Stiffness(const IndMaterial *m, IndTangent tangent, PetscInt nb, const PetscReal *G,
-                                         const PetscReal *ue, const PetscReal *old, PetscReal w, PetscReal *B,
-                                         PetscReal *DB, PetscReal *Ke)
+                                  const PetscReal *hoop, const PetscReal *ue, const PetscReal *old, PetscReal w,
+                                  PetscReal *B, PetscReal *DB, PetscReal *Ke)
 {
   PetscReal        H[9], F[9], S[6], DS[36], dp;
   IndPlasticStatus status;
 
-  IndDeformationGradient(nb, G, ue, H, F);
+  IndDeformationGradient(nb, G, hoop, ue, H, F);
   status = FinitePoint(m, tangent, H, old, NULL, S, DS, &dp);
-  if (status == IND_PLASTIC_OK) AddFiniteStiffness(nb, G, F, S, DS, w, B, DB, Ke);
+  if (status == IND_PLASTIC_OK) AddFiniteStiffness(nb, G, hoop, F, S, DS, w, B, DB, Ke);
   return status;
 }
 
 /* Cauchy stress and spatial Hencky strain of a committed point; w becomes the weight of the current volume. */
-static void Fields(const IndMaterial *m, PetscInt nb, const PetscReal *G, const PetscReal *ue, const PetscReal *h,
-                   PetscReal sigma[6], PetscReal e[6], PetscReal *w)
+static void Fields(const IndMaterial *m, PetscInt nb, const PetscReal *G, const PetscReal *hoop, const PetscReal *ue,
+                   const PetscReal *h, PetscReal sigma[6], PetscReal e[6], PetscReal *w)
 {
   const IndPlasticState *st = (const IndPlasticState *)h;
   IndLogStrain           ls;
   PetscReal              H[9], F[9], E[6], ee[6], T[6], S[6];
 
-  IndDeformationGradient(nb, G, ue, H, F);
+  IndDeformationGradient(nb, G, hoop, ue, H, F);
   if (IndLogStrainFromGradient(H, &ls, E)) { /* a committed state is never inverted; report it, not hide it */
     for (int k = 0; k < 6; ++k) sigma[k] = e[k] = NAN;
     return;

@@ -78,6 +78,13 @@ PetscErrorCode IndAppCreate(MPI_Comm comm, IndApp *out)
   PetscCheck(app->contact || app->path.depth_max == 0, comm, PETSC_ERR_ARG_WRONG,
     "-load_depth needs an indenter: -indenter_type");
   PetscCall(IndScratchSetFromOptions(comm, app->contact ? PETSC_TRUE : PETSC_FALSE, &app->scratch));
+  {
+    PetscBool axisymmetric;
+    PetscCall(IndMeshIsAxisymmetric(app->mesh, &axisymmetric));
+    PetscCheck(!axisymmetric || app->scratch.length == 0, comm, PETSC_ERR_SUP,
+      "-scratch_length: a scratch slides the indenter off the axis, which the axisymmetric model (a 2D mesh) cannot "
+      "represent; use a 3D mesh (inputs/scratch.opts)");
+  }
   if (app->contact && !IndHelpListing()) PetscCall(IndScratchSetUp(&app->scratch, app->contact, app->bc));
   if (app->scratch.length > 0) IndLoadPathSetScratch(&app->path, app->scratch.steps);
   PetscCall(IndHistoryCreate(app->disc, &app->history));
@@ -131,9 +138,11 @@ PetscErrorCode IndAppCreate(MPI_Comm comm, IndApp *out)
       PetscCall(IndMeshGetSource(app->mesh, &source));
       PetscCallMPI(MPI_Comm_size(comm, &size));
       PetscCall(PetscPrintf(comm,
-        "indent: mesh %s, %" PetscInt_FMT " %s, %s%" PetscInt_FMT " elements, %" PetscInt_FMT " dofs, %d rank%s\n",
-        source, ncell, L->simplex ? "tetrahedra" : "hexahedra", L->simplex ? "P" : "Q", L->degree, ndof, size,
-        size > 1 ? "s" : ""));
+        "indent: mesh %s, %" PetscInt_FMT " %s, %s%" PetscInt_FMT " elements, %" PetscInt_FMT " dofs%s, %d rank%s\n",
+        source, ncell,
+        L->axisymmetric ? (L->simplex ? "triangles" : "quadrilaterals") : (L->simplex ? "tetrahedra" : "hexahedra"),
+        L->simplex ? "P" : "Q", L->degree, ndof, L->axisymmetric ? " (axisymmetric: the hoop third held at zero)" : "",
+        size, size > 1 ? "s" : ""));
     }
   }
   *out = app;
