@@ -11,8 +11,9 @@ csm.png: H and E_r against depth (against h/t with --film-thickness t), with the
 film and the substrate drawn when the run's summary.json names them; with RUN_DIR/scratch.csv (a
 scratch test) scratch.png: the normal and lateral forces against the sliding distance and the apparent
 friction coefficient lateral / normal while sliding, with the Coulomb coefficient of the run's
-summary.json. Half (y >= 0) and quarter (x, y >= 0) models are mirrored for the pictures. Exit status 2
-on bad input.
+summary.json. Half (y >= 0) and quarter (x, y >= 0) models are mirrored for the pictures. An axisymmetric
+section (a 2D mesh, doc/axisymmetric.md) gives its imprint as a profile (imprint.csv with y = 0, imprint.png
+the height against r) and its slice is the section itself, mirrored about the axis. Exit status 2 on bad input.
 """
 import argparse
 import json
@@ -27,7 +28,7 @@ matplotlib.use("Agg")  # files only, never a window: the script also runs on mac
 import matplotlib.pyplot as plt  # noqa: E402  (must come after the backend is chosen)
 from matplotlib import colors, ticker, tri as mtri  # noqa: E402
 
-from runfiles import (CELL_FACES, InputError, curve_rows, field_steps, mirror, plane_faces,  # noqa: E402
+from runfiles import (InputError, curve_rows, field_steps, is_section, mirror, plane_faces,  # noqa: E402
                       read_curve, read_scratch)  # (this script's folder)
 
 CSV_NAME = "load_displacement.csv"
@@ -54,10 +55,14 @@ class Run:
         self.path = path
         self.x = self.dataset("geometry/vertices")[:]
         self.cells = self.dataset("topology/cells")[:].astype(np.int64)
-        if self.x.ndim != 2 or self.x.shape[1] != 3 or self.cells.ndim != 2 or self.cells.shape[1] not in CELL_FACES:
-            raise InputError(f"{path}: expected vertices (N, 3) and cells (C, 4 or 8), got {self.x.shape} and {self.cells.shape}")
+        if self.x.ndim != 2 or self.x.shape[1] != 3 or self.cells.ndim != 2 or self.cells.shape[1] not in (3, 4, 8):
+            raise InputError(f"{path}: expected vertices (N, 3) and cells (C, 3, 4 or 8), got {self.x.shape} and "
+                             f"{self.cells.shape}")
         lo, hi = self.x.min(axis=0), self.x.max(axis=0)
         self.tol = REL_TOL * float(np.max(hi - lo))
+        self.section = is_section(self.x, self.cells, self.tol)  # axisymmetric: x = r, z the axis
+        if self.cells.shape[1] == 3 and not self.section:
+            raise InputError(f"{path}: triangles outside the plane y = 0: not a mesh indent writes")
         self.lo, self.hi = lo, hi
         self.z_top = hi[2]
         self.nsteps = self.dataset("fields/displacement").shape[0]
@@ -199,17 +204,47 @@ def write_imprint(path, xy, height):
     print(f"wrote {path}")
 
 
+def plot_profile(r, height, contact, what, path):
+    """The imprint of an axisymmetric section: the top surface's height against the radius, mirrored
+    about the axis; contact (vertex status at P_max, or None) marks the contact's edge."""
+    fig, ax = plt.subplots(figsize=(6.5, 4))
+    hmin = height.min()
+    reach = 3 * r[height < 0.05 * hmin].max() if hmin < 0 and (height < 0.05 * hmin).any() else r.max()
+    ax.plot(np.r_[-r[::-1], r], np.r_[height[::-1], height], "-", color="tab:blue")
+    ax.axhline(0, color="k", lw=0.6)
+    if contact is not None and (contact > 0).any():
+        edge = r[contact > 0].max()
+        for s in (-1, 1):
+            ax.axvline(s * edge, color="tab:green", ls="--", lw=1)
+        ax.plot([], [], "--", color="tab:green", label="contact edge at P_max")
+        ax.legend(loc="lower right", fontsize=8)
+    ax.set_xlim(-reach, reach)
+    ax.set_xlabel("r (nm)")
+    ax.set_ylabel("height (nm)")
+    ax.set_title(f"{what}: min {hmin:.3g} nm, pile-up {max(height.max(), 0):.3g} nm\n(black line: original surface level)",
+                 fontsize=10)
+    save(fig, path)
+
+
 def imprint(run, curve, out):
     """imprint.csv and imprint.png: the top surface at the last step, relative to its original level."""
+    load = curve["load_uN"]
+    what = "residual imprint" if load[-1] <= 1e-9 * load.max() else f"surface under P = {load[-1]:.4g} uN"
+    contact = run.optional_field("contact_status", peak_step(run, curve))
+    if run.section:
+        verts = np.flatnonzero(np.abs(run.x[:, 2] - run.z_top) <= run.tol)
+        verts = verts[np.argsort(run.x[verts, 0])]
+        u = run.field("displacement", run.nsteps - 1)[verts]
+        r, height = run.x[verts, 0] + u[:, 0], run.x[verts, 2] + u[:, 2] - run.z_top
+        write_imprint(os.path.join(out, "imprint.csv"), np.column_stack([r, np.zeros_like(r)]), height)
+        plot_profile(r, height, None if contact is None else contact[verts], what, os.path.join(out, "imprint.png"))
+        return
     verts, tris = top_surface(run)
     xy = run.x[verts, :2]
     height = run.x[verts, 2] + run.field("displacement", run.nsteps - 1)[verts, 2] - run.z_top
     write_imprint(os.path.join(out, "imprint.csv"), xy, height)
-    load = curve["load_uN"]
-    contact = run.optional_field("contact_status", peak_step(run, curve))
-    # Only a run unloaded until the indenter left shows a residual imprint; otherwise the picture
+    # Only a run unloaded until the indenter left shows a residual imprint (what); otherwise the picture
     # is the surface under the last load, and the title must not claim otherwise.
-    what = "residual imprint" if load[-1] <= 1e-9 * load.max() else f"surface under P = {load[-1]:.4g} uN"
     plot_imprint(run, xy, tris, height, None if contact is None else contact[verts], what, os.path.join(out, "imprint.png"))
 
 
@@ -278,6 +313,10 @@ def section_y0(run):
     lying on the plane when they cover it (half model, or a full mesh with an internal surface
     there); otherwise the centroids of the cells cut by the plane, with triangles None."""
     on_plane = np.abs(run.x[:, 1]) <= run.tol
+    if run.section:  # the section is the slice, mirrored about its axis
+        tris, owners = plane_faces(run.cells, on_plane, section=True)
+        xz, tris, _, tsrc = mirror(run.x[:, [0, 2]], tris, [0], run.tol)
+        return xz, tris, owners[tsrc]
     if on_plane.any():
         tris, owners = plane_faces(run.cells, on_plane)
         xz = run.x[:, [0, 2]]

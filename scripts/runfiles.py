@@ -23,12 +23,19 @@ class InputError(Exception):
     """A missing or malformed input file: reported in one line, exit status 2."""
 
 
-def plane_faces(cells, on_plane):
+def is_section(x, cells, tol):
+    """An axisymmetric section (a 2D mesh, which indent writes in the plane y = 0 with x the radius and z
+    the axis): triangles, or quadrilaterals whose vertices all lie on y = 0 (a tetrahedron's four cannot)."""
+    return cells.ndim == 2 and cells.shape[1] in (3, 4) and bool(np.all(np.abs(x[:, 1]) <= tol))
+
+
+def plane_faces(cells, on_plane, section=False):
     """Triangles of the cell faces whose vertices all lie on a plane (on_plane: vertex mask), with
-    the cell owning each triangle."""
+    the cell owning each triangle; on a section (is_section) the faces are the cells themselves."""
     flags = on_plane[cells]
     tris, owners = [], []
-    for face in CELL_FACES[cells.shape[1]]:  # a loop over the 4 or 6 local faces, not over cells
+    faces = [tuple(range(cells.shape[1]))] if section else CELL_FACES[cells.shape[1]]
+    for face in faces:  # a loop over the 4 or 6 local faces, not over cells
         owner = np.flatnonzero(flags[:, face].all(axis=1))
         v = cells[owner][:, face]
         for k in range(1, len(face) - 1):  # fan of the face: 1 triangle, or 2 for a quadrilateral
@@ -68,11 +75,14 @@ def top_surface(h5, path):
     x = dataset(h5, "geometry/vertices", path)[:]
     cells = dataset(h5, "topology/cells", path)[:].astype(np.int64)
     disp = dataset(h5, "fields/displacement", path)
-    if x.ndim != 2 or x.shape[1] != 3 or cells.ndim != 2 or cells.shape[1] not in CELL_FACES or disp.shape[0] == 0:
+    if x.ndim != 2 or x.shape[1] != 3 or cells.ndim != 2 or cells.shape[1] not in (3, 4, 8) or disp.shape[0] == 0:
         raise InputError(f"{path}: expected vertices (N, 3), cells (C, 4 or 8) and a displacement step")
     u = disp[disp.shape[0] - 1]
     lo, hi = x.min(axis=0), x.max(axis=0)
     tol = REL_TOL * float(np.max(hi - lo))
+    if is_section(x, cells, tol):
+        raise InputError(f"{path}: an axisymmetric section, whose top surface is a profile, not a map: its imprint "
+                         "is imprint.csv of scripts/plot-indent.py")
     on_top = np.abs(x[:, 2] - hi[2]) <= tol
     tris, _ = plane_faces(cells, on_top)
     verts = np.flatnonzero(on_top)

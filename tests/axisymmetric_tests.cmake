@@ -1,5 +1,5 @@
-# The axisymmetric model (doc/axisymmetric.md): a 2D mesh in (r, z). Included by tests/CMakeLists.txt after
-# input_tests.cmake (EXPECT_ERROR, INDENT, MUMPS_LU).
+# The axisymmetric model (doc/axisymmetric.md): a 2D mesh in (r, z). Included at the end of tests/CMakeLists.txt,
+# whose variables it uses (EXPECT_ERROR, INDENT, MUMPS_LU, PLASTIC_LAW, RUN_RESTART).
 set(AXI_BLOCK ${CMAKE_SOURCE_DIR}/inputs/axisymmetric_block.geo)
 set(AXI_MESHES)
 # A unit block for the patch tests (triangles, and quadrilaterals), and a 100 um block for the elastic contact
@@ -81,6 +81,39 @@ indent_script_test(axisymmetric_kick_dao_np2 ${INDENT_PYTHON} ${CMAKE_CURRENT_SO
   --np 2 --mpiexec ${MPIEXEC_EXECUTABLE} --mpiexec-args= --young 70 --yield 0.3 --friction 0.15 --options "-formulation finite"
   --depth 60 --steps 24 --min-elements 25 --tol 0.01 --expect-C 25.8 --C-tol 0.02)
 set_tests_properties(axisymmetric_kick_dao_np2 PROPERTIES PROCESSORS 2 TIMEOUT 600)
+
+# inputs/cone_axisymmetric.opts runs (coarse, shallow, as the example_* tests); its fields are a section of
+# triangles that check_xdmf.py, meshio and ParaView read (every field of every step equal to indent.h5; 77 when
+# a reader is missing), and scripts/plot-indent.py draws its curve, imprint profile and (r, z) slice.
+set(TEST_LABEL input)
+set(AXI_EXAMPLE_DIR ${CMAKE_CURRENT_BINARY_DIR}/example_cone_axisymmetric)
+indent_mpi_test(NAME example_cone_axisymmetric_np2 NP 2 LABELS input
+  COMMAND $<TARGET_FILE:indent> -options_file ${CMAKE_SOURCE_DIR}/inputs/cone_axisymmetric.opts
+  -mesh_file ${CMAKE_SOURCE_DIR}/inputs/axisymmetric_film.geo -mesh_geo_parameters h_tip=20,h_far=400,r_fine=200
+  -load_depth 20 -load_steps 4 -load_unload_steps 20 -output_fields_every 1 -output_dir ${AXI_EXAMPLE_DIR}
+  -output_overwrite -quiet)
+set_tests_properties(example_cone_axisymmetric_np2 PROPERTIES FIXTURES_SETUP axi_example)
+indent_script_test(axisymmetric_xdmf_index ${INDENT_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_xdmf.py
+  ${AXI_EXAMPLE_DIR}/indent.xdmf)
+foreach(reader meshio paraview)
+  indent_script_test(axisymmetric_xdmf_${reader} ${INDENT_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_xdmf_${reader}.py
+    ${AXI_EXAMPLE_DIR}/indent.xdmf)
+  set_tests_properties(axisymmetric_xdmf_${reader} PROPERTIES SKIP_RETURN_CODE 77)
+endforeach()
+indent_script_test(axisymmetric_plots ${INDENT_PYTHON} ${CMAKE_SOURCE_DIR}/scripts/plot-indent.py ${AXI_EXAMPLE_DIR}
+  --out ${CMAKE_CURRENT_BINARY_DIR}/axisymmetric_plots)
+set_tests_properties(axisymmetric_xdmf_index axisymmetric_xdmf_meshio axisymmetric_xdmf_paraview axisymmetric_plots
+  PROPERTIES FIXTURES_REQUIRED axi_example)
+
+# A section stopped after 3 steps on 2 ranks and continued on 1 gives the uninterrupted run's curve, summary and
+# fields (measured: 1e-14 of their largest values); other model options or another mesh are refused.
+set(TEST_LABEL production)
+indent_script_test(restart_axisymmetric_np2_to_1 ${RUN_RESTART} --workdir ${CMAKE_CURRENT_BINARY_DIR}/restart_axi
+  --np 2,1 --stop 3 --rtol 1e-10 --changed-option=-film_yield=0.35
+  --mesh-change=-mesh_geo_parameters=h_tip=25,h_far=400,r_fine=200
+  -- -options_file ${CMAKE_SOURCE_DIR}/inputs/cone_axisymmetric.opts -mesh_file ${CMAKE_SOURCE_DIR}/inputs/axisymmetric_film.geo
+  -mesh_geo_parameters h_tip=20,h_far=400,r_fine=200 -load_depth 20 -load_steps 6 -load_unload_steps 20 -quiet -film_yield 0.3)
+set_tests_properties(restart_axisymmetric_np2_to_1 PROPERTIES PROCESSORS 2)
 
 # Bad input: what a section cannot represent is refused in one line that names the way out.
 set(TEST_LABEL "input;faults")

@@ -146,18 +146,23 @@ def check(path):
         if saved != listed:
             raise XdmfError(f"/fields/step {saved} differs from the index's steps {listed}")
     X, C = vertices[()], cells[()]
-    expected = {4: "Tetrahedron", 8: "Hexahedron"}.get(C.shape[1])
+    # an axisymmetric section (a 2D mesh) lies in the plane y = 0: triangles, or quadrilaterals
+    section = C.shape[1] in (3, 4) and bool(np.all(X[:, 1] == 0))
+    expected = ({3: "Triangle", 4: "Quadrilateral"} if section else {4: "Tetrahedron", 8: "Hexahedron"}).get(C.shape[1])
     if steps[0]["topology"][0] != expected:
         raise XdmfError(f"TopologyType {steps[0]['topology'][0]} for cells of {C.shape[1]} vertices")
     P = X[C]
-    if C.shape[1] == 4:
+    if section:  # a section's cells may be drawn either way round: only a degenerate one is wrong
+        xz = P[:, :, [0, 2]]
+        vol = np.abs(np.cross(xz[:, 1] - xz[:, 0], xz[:, 2] - xz[:, 0]))
+    elif C.shape[1] == 4:
         vol = np.einsum("ij,ij->i", np.cross(P[:, 1] - P[:, 0], P[:, 2] - P[:, 0]), P[:, 3] - P[:, 0])
     else:  # VTK hexahedron: corner 0 with its three neighbours 1, 3, 4
         vol = np.einsum("ij,ij->i", np.cross(P[:, 1] - P[:, 0], P[:, 3] - P[:, 0]), P[:, 4] - P[:, 0])
     if (vol <= 0).any():
         raise XdmfError(f"{(vol <= 0).sum()} cells with non-positive volume in VTK order")
     print(f"ok: {checked} HDF references, {len(steps)} steps at times {times[0]:g} .. {times[-1]:g} increasing, "
-          f"Information {wanted}, {compared} steps equal to the curve, {C.shape[0]} cells with positive volume")
+          f"Information {wanted}, {compared} steps equal to the curve, {C.shape[0]} cells with positive {'area' if section else 'volume'}")
 
 
 def main(path):

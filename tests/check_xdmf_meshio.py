@@ -27,7 +27,8 @@ def main(path):
         return 1
     h5 = h5py.File(os.path.join(os.path.dirname(path), "indent.h5"), "r")
     X, C = h5["geometry/vertices"][()], h5["topology/cells"][()]
-    kind = {4: "tetra", 8: "hexahedron"}[C.shape[1]]
+    section = C.shape[1] in (3, 4) and bool(np.all(X[:, 1] == 0))  # an axisymmetric section, in y = 0
+    kind = ({3: "triangle", 4: "quad"} if section else {4: "tetra", 8: "hexahedron"})[C.shape[1]]
     compared = 0
     with meshio.xdmf.TimeSeriesReader(path) as reader:
         points, cells = reader.read_points_cells()

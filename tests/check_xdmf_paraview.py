@@ -14,7 +14,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from check_xdmf import XdmfError, read_index  # noqa: E402
 
 SKIP = 77
-VTK_TETRA, VTK_HEXAHEDRON = 10, 12
+VTK_TRIANGLE, VTK_QUAD, VTK_TETRA, VTK_HEXAHEDRON = 5, 9, 10, 12
 
 
 def fetch(reader, t):
@@ -34,7 +34,8 @@ def check_reader(label, reader, steps, h5):
 
     C = h5["topology/cells"]
     nvert, (ncell, corners) = h5["geometry/vertices"].shape[0], C.shape
-    cell_type = {4: VTK_TETRA, 8: VTK_HEXAHEDRON}[corners]
+    section = corners in (3, 4) and not np.any(h5["geometry/vertices"][:, 1])  # an axisymmetric section, in y = 0
+    cell_type = ({3: VTK_TRIANGLE, 4: VTK_QUAD} if section else {4: VTK_TETRA, 8: VTK_HEXAHEDRON})[corners]
     times = np.array([s["time"] for s in steps])
     reader.UpdatePipelineInformation()
     seen = np.array(reader.TimestepValues, dtype=float).ravel()

@@ -144,16 +144,15 @@ static PetscErrorCode ConvergedUnlessStalled(SNES snes, PetscInt it, PetscReal x
 
 /* A section's systems are 2D: a sparse LU's fill grows as n log n there. On a Kick's-law section (14,400 cells,
    43k dofs, 2 ranks) GAMG took 128 GMRES iterations per Newton iteration (the hoop stiffness, E / r^2 beside the
-   axis, is not the Laplacian-like operator it coarsens) and the run 212 s; MUMPS's LU 25 s. PCREDISTRIBUTE hands
-   the LU the system without its rows of a diagonal alone (every node's hoop dof, and the other conditions),
-   which MUMPS would otherwise factor as a third of the unknowns, with their zeros: a factorization 150 to 62 ms,
-   8 steps of that case 18.0 to 11.6 s, the loads equal to 1e-9 (doc/axisymmetric.md). A factorization serves
-   one Newton iteration: a lagged one would be one sweep of a stale inverse, and Newton converge linearly (278
-   Newton iterations instead of 151). Without MUMPS the 3D defaults stay. */
+   axis, is not the Laplacian-like operator it coarsens) and the run 212 s; MUMPS's LU 25 s. A factorization
+   serves one Newton iteration: a lagged one would be one sweep of a stale inverse, and Newton converge linearly
+   (278 Newton iterations instead of 151). PCREDISTRIBUTE, which would spare the LU the hoop unknowns' rows, is
+   not exact once the contact's unsymmetric rows are active (GMRES needed 3 and more iterations with it):
+   doc/axisymmetric.md. Without MUMPS the 3D defaults stay. */
 static PetscErrorCode AxisymmetricSolverDefaults(SNES snes)
 {
-  KSP       ksp, inner;
-  PC        pc, lu;
+  KSP       ksp;
+  PC        pc;
   PetscBool mumps;
 
   PetscFunctionBeginUser;
@@ -162,12 +161,8 @@ static PetscErrorCode AxisymmetricSolverDefaults(SNES snes)
   PetscCall(SNESGetKSP(snes, &ksp));
   PetscCall(KSPSetType(ksp, KSPPREONLY));
   PetscCall(KSPGetPC(ksp, &pc));
-  PetscCall(PCSetType(pc, PCREDISTRIBUTE));
-  PetscCall(PCRedistributeGetKSP(pc, &inner));
-  PetscCall(KSPSetType(inner, KSPPREONLY));
-  PetscCall(KSPGetPC(inner, &lu));
-  PetscCall(PCSetType(lu, PCLU));
-  PetscCall(PCFactorSetMatSolverType(lu, MATSOLVERMUMPS));
+  PetscCall(PCSetType(pc, PCLU));
+  PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
   PetscCall(SNESSetLagPreconditioner(snes, 1));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
