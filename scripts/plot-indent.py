@@ -221,7 +221,8 @@ def plot_profile(r, height, contact, what, path):
     ax.set_xlim(-reach, reach)
     ax.set_xlabel("r (nm)")
     ax.set_ylabel("height (nm)")
-    ax.set_title(f"{what}: min {hmin:.3g} nm, pile-up {max(height.max(), 0):.3g} nm\n(black line: original surface level)",
+    pileup = max(height.max(), 0)
+    ax.set_title(f"{what}: min {hmin:.3g} nm, pile-up {pileup:.3g} nm\n(black line: original surface level)",
                  fontsize=10)
     save(fig, path)
 
@@ -294,7 +295,8 @@ def plot_imprint(run, xy, tris, height, contact, what, path):
     ax.set_aspect("equal")
     ax.set_xlabel("x (nm)")
     ax.set_ylabel("y (nm)")
-    ax.set_title(f"{what}: min {hmin:.3g} nm, pile-up {pileup:.3g} nm\n(black line: original surface level)", fontsize=10)
+    ax.set_title(f"{what}: min {hmin:.3g} nm, pile-up {pileup:.3g} nm\n(black line: original surface level)",
+                 fontsize=10)
     fig.colorbar(cs, ax=ax, label="height (nm)", ticks=levels[::2])
     save(fig, path)
 

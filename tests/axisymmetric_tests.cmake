@@ -5,9 +5,10 @@ set(AXI_MESHES)
 # A unit block for the patch tests (triangles, and quadrilaterals), and a 100 um block for the elastic contact
 # references, graded from 5 nm cells within 400 nm of the tip at 0.075 times the distance (a coarser far field,
 # 0.3, made the loads 0.5% high).
-foreach(spec "patch_tri;-setnumber width 1 -setnumber depth 1 -setnumber h_tip 0.1 -setnumber h_far 0.3 -setnumber r_fine 0.3"
-             "patch_quad;-setnumber width 1 -setnumber depth 1 -setnumber h_tip 0.1 -setnumber h_far 0.3 -setnumber r_fine 0.3 -setnumber quads 1"
-             "elastic_quad;-setnumber width 100000 -setnumber depth 100000 -setnumber h_tip 5 -setnumber h_far 20000 -setnumber r_fine 400 -setnumber grow 0.075 -setnumber quads 1")
+set(AXI_UNIT "-setnumber width 1 -setnumber depth 1 -setnumber h_tip 0.1 -setnumber h_far 0.3 -setnumber r_fine 0.3")
+set(AXI_WIDE "-setnumber width 100000 -setnumber depth 100000 -setnumber h_tip 5 -setnumber h_far 20000")
+foreach(spec "patch_tri;${AXI_UNIT}" "patch_quad;${AXI_UNIT} -setnumber quads 1"
+             "elastic_quad;${AXI_WIDE} -setnumber r_fine 400 -setnumber grow 0.075 -setnumber quads 1")
   list(GET spec 0 name)
   list(GET spec 1 params)
   separate_arguments(params)
@@ -35,8 +36,8 @@ foreach(spec "P1;tri;1" "P2;tri;2" "Q1;quad;1" "Q2;quad;2")
   list(GET spec 1 mesh)
   list(GET spec 2 deg)
   indent_mpi_test(NAME axisymmetric_patch_${el}_np2 NP 2 LABELS validation
-    COMMAND $<TARGET_FILE:test_contact> -mesh_file ${MESHDIR}/axi_patch_${mesh}.msh -mesh_perturb 0.3 -disc_degree ${deg}
-    ${AXI_PUNCH} -output_dir ${CMAKE_CURRENT_BINARY_DIR}/axi_patch_${el} -output_overwrite)
+    COMMAND $<TARGET_FILE:test_contact> -mesh_file ${MESHDIR}/axi_patch_${mesh}.msh -mesh_perturb 0.3
+    -disc_degree ${deg} ${AXI_PUNCH} -output_dir ${CMAKE_CURRENT_BINARY_DIR}/axi_patch_${el} -output_overwrite)
 endforeach()
 # The rigid sphere (R 1000 nm, to h/R = 0.1) against its exact solution (Segedin 1957; Hertz's paraboloid is
 # 0.1 h/R above it), and Sneddon's cone, each within 0.5% (measured: +0.17 to +0.33%, +0.15 to +0.35%).
@@ -78,7 +79,8 @@ endforeach()
 set(TEST_LABEL validation)
 indent_script_test(axisymmetric_kick_dao_np2 ${INDENT_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_kick.py --section
   --indent $<TARGET_FILE:indent> --mesh ${MESHDIR}/kick_section.msh --workdir ${CMAKE_CURRENT_BINARY_DIR}/axi_kick
-  --np 2 --mpiexec ${MPIEXEC_EXECUTABLE} --mpiexec-args= --young 70 --yield 0.3 --friction 0.15 --options "-formulation finite"
+  --np 2 --mpiexec ${MPIEXEC_EXECUTABLE} --mpiexec-args= --young 70 --yield 0.3 --friction 0.15
+  --options "-formulation finite"
   --depth 60 --steps 24 --min-elements 25 --tol 0.01 --expect-C 25.8 --C-tol 0.02)
 set_tests_properties(axisymmetric_kick_dao_np2 PROPERTIES PROCESSORS 2 TIMEOUT 600)
 
@@ -110,9 +112,11 @@ set_tests_properties(axisymmetric_xdmf_index axisymmetric_xdmf_meshio axisymmetr
 set(TEST_LABEL production)
 indent_script_test(restart_axisymmetric_np2_to_1 ${RUN_RESTART} --workdir ${CMAKE_CURRENT_BINARY_DIR}/restart_axi
   --np 2,1 --stop 3 --rtol 1e-10 --changed-option=-film_yield=0.35
-  --mesh-change=-mesh_geo_parameters=h_tip=25,h_far=400,r_fine=200
-  -- -options_file ${CMAKE_SOURCE_DIR}/inputs/cone_axisymmetric.opts -mesh_file ${CMAKE_SOURCE_DIR}/inputs/axisymmetric_film.geo
-  -mesh_geo_parameters h_tip=20,h_far=400,r_fine=200 -load_depth 20 -load_steps 6 -load_unload_steps 20 -quiet -film_yield 0.3)
+  --mesh-change=-mesh_geo_parameters=h_tip=50,h_far=400,r_fine=200
+  -- -options_file ${CMAKE_SOURCE_DIR}/inputs/cone_axisymmetric.opts
+  -mesh_file ${CMAKE_SOURCE_DIR}/inputs/axisymmetric_film.geo
+  -mesh_geo_parameters h_tip=40,h_far=400,r_fine=200 -load_depth 20 -load_steps 5 -load_unload_steps 10 -quiet
+  -film_yield 0.3)
 set_tests_properties(restart_axisymmetric_np2_to_1 PROPERTIES PROCESSORS 2)
 
 # Bad input: what a section cannot represent is refused in one line that names the way out.

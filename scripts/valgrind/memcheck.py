@@ -32,15 +32,19 @@ SUPPRESSIONS = os.path.join(HERE, "openmpi.supp")
 # solver_anatomy (3 s alone, 80 s under valgrind; its solves are the runs' own, checked by the others),
 # ew_tangent_predictor (43 s under valgrind: PETSc's Eisenstat-Walker with the tangent predictor, whose solve
 # runs at the first step of every indentation here) and all but two of the eight run_checks_* (the same
-# program deciding other warnings, 7 s each, mostly valgrind's start), and two of the four axisymmetric_newton_*
-# (the P2 and P1 sections, 48 and 16 s under valgrind; the Q1 ones run the same hoop kernels, 10 and 13 s). Plus the
+# program deciding other warnings, 7 s each, mostly valgrind's start), three of the four axisymmetric_newton_*
+# (48, 16 and 10 s under valgrind; finite_Q1, 14 s, runs the hoop terms of the cell loop and of both kinematics'
+# shared helpers), and the second variant of four programs that run in another test already:
+# plastic_newton_elastic_tangent (18 s), plastic_cycle_hex_Q2 (17 s), uniaxial_roller_hex_Q2 (9 s) and
+# plastic_uniaxial_cutback_hex_Q2 (11 s; plastic_uniaxial_return_cutback rejects steps too). Plus the
 # flat-punch contact patch test, which also runs on 2 ranks, a small indentation that writes every
 # output file (HDF5 fields, XDMF, curve, summary) and a small scratch (scratch.csv, the sliding contact).
 LABELS = {"unit", "component"}
 SLOW = re.compile(r"^(mms_|plastic_newton(_finite)?_tet_P2|plastic_newton_(power|swift|table)_|"
                   r"state_roundtrip_(depth_np2|load|fixed_point)|solver_anatomy|ew_tangent_predictor|"
                   r"run_checks_(edge_small|edge_quarter|area|inverted|loading_touches)|"
-                  r"axisymmetric_newton_(small_P2|finite_P1))")
+                  r"axisymmetric_newton_(small_Q1|small_P2|finite_P1)|plastic_newton_elastic_tangent|"
+                  r"plastic_cycle_hex_Q2|uniaxial_roller_hex_Q2|plastic_uniaxial_cutback_hex_Q2)")
 TWO_RANKS = "contact_patch_hex_Q1_np2"
 EXTRA = {TWO_RANKS, "xdmf_indent_run", "example_scratch_np2"}
 VALGRIND_EXIT = 99  # --error-exitcode: tells memcheck's errors from the test's own failures

@@ -197,7 +197,8 @@ static PetscErrorCode MarkAxisymmetricConditions(IndBC bc, Vec Mloc)
   PetscCall(VecGetLocalSize(Mloc, &n));
   PetscCall(VecGetArrayRead(bc->disc->Xloc, &x));
   for (PetscInt k = 0; k < n; ++k) extent = PetscMax(extent, PetscAbsReal(PetscRealPart(x[k])));
-  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &extent, 1, MPIU_REAL, MPIU_MAX, PetscObjectComm((PetscObject)bc->disc->dm)));
+  PetscCallMPI(
+    MPI_Allreduce(MPI_IN_PLACE, &extent, 1, MPIU_REAL, MPIU_MAX, PetscObjectComm((PetscObject)bc->disc->dm)));
   PetscCall(VecGetArray(Mloc, &m));
   for (PetscInt k = 0; k < n; k += 3) {
     m[k + 1] += 1.0;
