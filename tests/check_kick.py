@@ -52,7 +52,8 @@ def indent_options(args):
     return [
         "-domain_young", f"{args.young:g}", "-domain_poisson", str(NU),
         "-domain_model", "plastic", "-domain_yield", f"{args.yield_stress:g}", "-domain_hardening", "linear",
-        "-domain_hardening_slope", "0", *([] if args.section else ["-bc_symmetry", "left,front"]), "-bc_fixed", "bottom",
+        "-domain_hardening_slope", "0", *([] if args.section else ["-bc_symmetry", "left,front"]),
+        "-bc_fixed", "bottom",
         "-indenter_type", "cone", "-indenter_radius", "0", "-contact_friction", f"{args.friction:g}",
         *(["-load_unload_steps", str(args.unload_steps)] if args.unload_steps else ["-load_unload", "0"]),
         "-ksp_type", "preonly", "-pc_type", "lu", "-pc_factor_mat_solver_type", "mumps",
@@ -80,7 +81,8 @@ def parse():
     ap.add_argument("--C-tol", type=float, default=0.1, help="relative tolerance on --expect-C (0.1)")
     ap.add_argument("--unload-steps", type=int, default=0, help="unload in this many steps and check the pile-up trend (0)")
     ap.add_argument("--section", action="store_true",
-                    help="the mesh is an axisymmetric section (tests/meshes/kick_section.geo, x = r, y the axis): no symmetry planes")
+                    help="the mesh is an axisymmetric section (tests/meshes/kick_section.geo, x = r, y the axis): "
+                         "no symmetry planes")
     args = ap.parse_args()
     meshcheck.check_common(PROG, args)
     if args.steps < 1 or args.min_elements < 1:

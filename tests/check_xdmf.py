@@ -162,7 +162,8 @@ def check(path):
     if (vol <= 0).any():
         raise XdmfError(f"{(vol <= 0).sum()} cells with non-positive volume in VTK order")
     print(f"ok: {checked} HDF references, {len(steps)} steps at times {times[0]:g} .. {times[-1]:g} increasing, "
-          f"Information {wanted}, {compared} steps equal to the curve, {C.shape[0]} cells with positive {'area' if section else 'volume'}")
+          f"Information {wanted}, {compared} steps equal to the curve, {C.shape[0]} cells with positive "
+          f"{'area' if section else 'volume'}")
 
 
 def main(path):

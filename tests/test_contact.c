@@ -2,7 +2,8 @@ static const char help[] = "Contact verification against closed forms, after eve
   "run:\n"
                            "  -expect_hertz           P = 4/3 E* sqrt(R) h^1.5 (sphere; E, nu of region 'domain')\n"
                            "  -expect_sphere          the rigid sphere itself, not Hertz's paraboloid (Segedin 1957):\n"
-                           "                          h = a/2 ln((R+a)/(R-a)), P = E*/2 ((a^2+R^2) ln((R+a)/(R-a)) - 2aR)\n"
+                           "                          h = a/2 ln((R+a)/(R-a)),\n"
+                           "                          P = E*/2 ((a^2+R^2) ln((R+a)/(R-a)) - 2aR)\n"
                            "  -expect_sneddon         P = 2/pi E* tan(alpha) h^2 (cone of half-angle alpha)\n"
                            "  -expect_tol t           relative tolerance of those (default 0.03)\n"
                            "  -expect_from h          check only steps with depth >= h (nm) while loading\n"
@@ -49,8 +50,9 @@ static PetscErrorCode CheckStep(IndApp app, const IndStepResult *r, void *ctx)
   PetscCall(IndContactGetNodes(IndAppGetContact(app), &cn));
   if ((e->hertz || e->sphere || e->sneddon) && !IndLoadPathUnloading(IndAppGetLoadPath(app), r->t) && h >= e->from &&
       h > 0) {
-    const PetscReal P = e->hertz ? 4.0 / 3.0 * Es * PetscSqrtReal(in->radius) * PetscPowReal(h, 1.5)
-                      : e->sphere ? SphereLoad(Es, in->radius, h) : 2.0 / PETSC_PI * Es * PetscTanReal(in->angle) * h * h;
+    const PetscReal P = e->hertz    ? 4.0 / 3.0 * Es * PetscSqrtReal(in->radius) * PetscPowReal(h, 1.5)
+                      : e->sphere ? SphereLoad(Es, in->radius, h)
+                                  : 2.0 / PETSC_PI * Es * PetscTanReal(in->angle) * h * h;
     const PetscReal err = r->contact.load / P - 1;
     PetscCall(PetscPrintf(IndAppGetComm(app), "  depth %8.3f nm: P %.6e nN, %s %.6e nN, error %+.3f%%\n", (double)h,
       (double)r->contact.load, e->hertz ? "Hertz" : e->sphere ? "sphere" : "Sneddon", (double)P, (double)(100 * err)));
