@@ -7,7 +7,7 @@ Slurm or PBS job script per run, and one CSV of every run's summary.json. doc/cl
       --vary film_yield=0.2,0.3 --out sweeps/friction --np 2 [--run | --slurm | --pbs] [--collect] [--dry-run]
   scripts/sweep.py --out sweeps/friction --run --collect     # the same sweep again (from its sweep.json)
   scripts/sweep.py --base "-options_file inputs/cone_axisymmetric.opts" --vary film_yield=0.2,0.3 --out sweeps/cone \
-      --np 2 --run --collect     # a cone on the axisymmetric section: seconds a run (doc/axisymmetric.md)
+      --np 2 --run --collect     # a cone on the axisymmetric section: about a minute a run (doc/axisymmetric.md)
 
 --vary NAME=V1,V2,...: the values of option -NAME (separate them with ';' when they hold commas:
 --vary "mesh_geo_parameters=h_tip=10,h_far=250;h_tip=6,h_far=250"). The runs are every combination,

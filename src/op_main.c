@@ -18,6 +18,7 @@ static const char help[] = "indent-op: Oliver-Pharr analysis of a load-displacem
 #include <string.h>
 #include "ind_summary.h"
 #include "ind_indenter.h"
+#include "ind_indenter_profile.h"
 #include "ind_common.h"
 
 static PetscReal Area(PetscReal hc, void *ctx)
@@ -90,13 +91,14 @@ static PetscErrorCode ReadCurve(const char path[], PetscInt *n, PetscReal **h, P
 
 static PetscErrorCode Analyse(void)
 {
-  char        path[PETSC_MAX_PATH_LEN] = "";
+  char        path[PETSC_MAX_PATH_LEN] = "", profile[PETSC_MAX_PATH_LEN] = "";
+  PetscReal  *table = NULL;
   IndOPParams p;
   IndOPResult r;
   IndIndenter ind;
   PetscReal  *h, *P, *A, angle = 0;
   PetscInt    n = 0, imax = 0;
-  PetscBool   has_file, has_type, has_fit;
+  PetscBool   has_file, has_type, has_fit, has_profile;
   AreaFit     fit = {MAX_AREA_COEFFICIENTS, {0}};
   int         code;
 
@@ -112,6 +114,8 @@ static PetscErrorCode Analyse(void)
     NULL));
   PetscCall(IndOptionsReal("-indenter_angle", "Cone half-angle or pyramid face angle (0: the standard one)", "degrees",
     NULL, angle, &angle, NULL));
+  PetscCall(IndOptionsString("-indenter_profile", "-indenter_type table: its height above the tip against the radius",
+    "file", NULL, profile, profile, sizeof(profile), &has_profile));
   PetscCall(IndOptionsRealArray("-op_area_coefficients",
     "A calibrated area function instead of the indenter's: A = C0 h_c^2 + C1 h_c + C2 h_c^(1/2) + C3 h_c^(1/4) + ...",
     "C0,C1,... (nm^2, nm, ...)", NULL, fit.c, &fit.n, &has_fit));
@@ -123,6 +127,10 @@ static PetscErrorCode Analyse(void)
     "-indenter_type or -op_area_coefficients is required for the area function");
   PetscCheck(!(has_fit && has_type), PETSC_COMM_WORLD, PETSC_ERR_ARG_INCOMP,
     "-op_area_coefficients and -indenter_type both give the area function: give one");
+  PetscCheck(has_profile == (has_type && ind.type == IND_INDENTER_TABLE ? PETSC_TRUE : PETSC_FALSE), PETSC_COMM_WORLD,
+    PETSC_ERR_ARG_WRONG, "-indenter_profile goes with -indenter_type table, and table needs it");
+  if (has_profile) PetscCall(IndIndenterReadProfile(PETSC_COMM_WORLD, profile, &table, &ind.nprofile));
+  ind.profile = table;
   if (!has_fit) {
     ind.angle = angle * PETSC_PI / 180;
     PetscCheck(!IndIndenterSetUp(&ind), PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE,
@@ -159,6 +167,7 @@ static PetscErrorCode Analyse(void)
       (double)A[imax], (double)(A[imax] / r.A), (double)H, (double)Er, (double)E));
   }
   PetscCall(PetscFree3(h, P, A));
+  PetscCall(PetscFree(table));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -256,6 +256,107 @@ static void CheckProjection(void)
   }
 }
 
+/* The edge the load steps follow (IndIndenterEdgeRadius): where the indenter at depth h meets the undeformed
+   surface, pi a^2 = A(h) for the axisymmetric shapes and the sharp pyramids; its inverse returns the depth. */
+static void CheckEdgeRadius(void)
+{
+  const IndIndenterType types[4] = {IND_INDENTER_SPHERE, IND_INDENTER_CONE, IND_INDENTER_BERKOVICH,
+                                    IND_INDENTER_CUBE_CORNER};
+  const PetscReal       radii[4] = {100.0, 50.0, 0.0, 0.0};
+  const PetscReal       depths[6] = {0.5, 2.0, 3.0, 10.0, 60.0, 90.0};
+  PetscReal             area = 0, trip = 0;
+  IndIndenter           ind;
+
+  for (int k = 0; k < 4; ++k) {
+    MakeIndenter(types[k], radii[k], &ind);
+    for (int j = 0; j < 6; ++j) {
+      const PetscReal h = depths[j], a = IndIndenterEdgeRadius(&ind, h), A = IndIndenterArea(&ind, h);
+      area = PetscMax(area, PetscAbsReal(PETSC_PI * a * a - A) / A);
+      trip = PetscMax(trip, PetscAbsReal(IndIndenterEdgeDepth(&ind, a) - h) / h);
+    }
+  }
+  Report("edge radius: pi a(h)^2 = A(h) (sphere, rounded cone, sharp pyramids)", area, 1e-13);
+  Report("edge radius: its inverse returns the depth", trip, 1e-12);
+  MakeIndenter(IND_INDENTER_SPHERE, 100.0, &ind);
+  Report("edge radius: a sphere's edge never passes its radius", IndIndenterEdgeDepth(&ind, 100.0) == PETSC_MAX_REAL
+    && IndIndenterEdgeRadius(&ind, 150.0) == 100.0 ? 0.0 : 1.0, 0.0);
+  MakeIndenter(IND_INDENTER_FLAT, 100.0, &ind);
+  Report("edge radius: a flat punch's is its radius at every depth", PetscAbsReal(IndIndenterEdgeRadius(&ind,
+    5.0) - 100.0) + (IndIndenterEdgeDepth(&ind, 101.0) == PETSC_MAX_REAL ? 0.0 : 1.0), 0.0);
+  /* A rounded pyramid's is the equal-area cone's with the same tip: its radius tracks the ray integration's. */
+  MakeIndenter(IND_INDENTER_BERKOVICH, 50.0, &ind);
+  area = 0;
+  for (int j = 0; j < 6; ++j) {
+    const PetscReal h = depths[j], a = IndIndenterEdgeRadius(&ind, h), A = IndIndenterArea(&ind, h);
+    area = PetscMax(area, PetscAbsReal(a / PetscSqrtReal(A / PETSC_PI) - 1));
+  }
+  Report("edge radius: rounded berkovich R = 50, a within 8% of sqrt(A(h) / pi)", area, 0.08);
+}
+
+/* A table (-indenter_type table) sampled from the rounded cone and from the sphere gives their gaps and normals
+   to the chords' error, their area functions and edge radii. */
+static void CheckTable(void)
+{
+  enum { NCAP = 400 };
+  static PetscReal   cone[2 * (NCAP + 2)], sphere[2 * (NCAP + 1)];
+  IndIndenter        c, t, s, ts;
+  const PetscReal    R = 50, th = 70.3 * PETSC_PI / 180, rt = R * PetscCosReal(th), Rs = 100;
+  unsigned long long seed = 777;
+  PetscReal          worst_g = 0, worst_n = 0, worst_a = 0, worst_s = 0;
+
+  for (int i = 0; i <= NCAP; ++i) {
+    const PetscReal r = rt * i / NCAP, phi = 0.49 * PETSC_PI * i / NCAP;
+    cone[2 * i]       = r;
+    cone[2 * i + 1]   = R - PetscSqrtReal(R * R - r * r);
+    sphere[2 * i]     = Rs * PetscSinReal(phi);
+    sphere[2 * i + 1] = Rs * (1 - PetscCosReal(phi));
+  }
+  cone[2 * NCAP + 2] = rt + 5000 * PetscTanReal(th);
+  cone[2 * NCAP + 3] = R * (1 - PetscSinReal(th)) + 5000;
+  MakeIndenter(IND_INDENTER_CONE, R, &c);
+  MakeIndenter(IND_INDENTER_SPHERE, Rs, &s);
+  PetscMemzero(&t, sizeof(t));
+  t.type = IND_INDENTER_TABLE, t.profile = cone, t.nprofile = NCAP + 2;
+  t.axis[0] = c.axis[0], t.axis[1] = c.axis[1], t.surface = c.surface, t.depth = c.depth;
+  ts = t, ts.profile = sphere, ts.nprofile = NCAP + 1;
+  if (IndIndenterSetUp(&t) || IndIndenterSetUp(&ts)) failures++;
+  for (int k = 0; k < 1000; ++k) {
+    PetscReal x[3], g0, g1, n0[3], n1[3];
+    x[0] = c.axis[0] + 150 * (2 * Rand(&seed) - 1);
+    x[1] = c.axis[1] + 150 * (2 * Rand(&seed) - 1);
+    x[2] = c.surface - c.depth + 60 * (2 * Rand(&seed) - 1.2);
+    IndIndenterGap(&c, x, &g0, n0);
+    IndIndenterGap(&t, x, &g1, n1);
+    worst_g = PetscMax(worst_g, PetscAbsReal(g1 - g0));
+    if (g0 > 0.5) worst_n = PetscMax(worst_n, PetscAbsReal(n1[0] - n0[0]) + PetscAbsReal(n1[1] - n0[1]) +
+                                     PetscAbsReal(n1[2] - n0[2]));
+    if (PetscSqrtReal(PetscSqr(x[0] - s.axis[0]) + PetscSqr(x[1] - s.axis[1])) < 0.9 * Rs) {
+      IndIndenterGap(&s, x, &g0, n0);
+      IndIndenterGap(&ts, x, &g1, n1);
+      worst_s = PetscMax(worst_s, PetscAbsReal(g1 - g0));
+    }
+  }
+  for (int j = 1; j <= 50; ++j) {
+    const PetscReal h = 2.0 * j;
+    worst_a = PetscMax(worst_a, PetscAbsReal(IndIndenterArea(&t, h) / IndIndenterArea(&c, h) - 1));
+    worst_a = PetscMax(worst_a, PetscAbsReal(IndIndenterEdgeRadius(&t, h) / IndIndenterEdgeRadius(&c, h) - 1));
+    worst_a = PetscMax(worst_a, PetscAbsReal(IndIndenterEdgeDepth(&t, IndIndenterEdgeRadius(&t, h)) / h - 1));
+  }
+  /* chords of 0.049 pi / 400 rad on a sphere of radius 100 nm sag by R (1 - cos(dphi / 2)) = 1.9e-4 nm */
+  Report("table of the rounded cone (400 chords on the cap): gap", worst_g, 1e-4);
+  Report("table of the rounded cone: normal (smoothed across corners), 0.5 nm and more outside", worst_n, 1e-3);
+  Report("table of the rounded cone: A(h), edge radius and its inverse", worst_a, 1e-4);
+  Report("table of a sphere (400 chords): gap within 0.9 R of the axis, to the chords' sag", worst_s, 2e-4);
+  {
+    PetscReal bad[6] = {0, 0, 10, 1, 20, 1}; /* a flat last segment */
+    IndIndenter b = t;
+    b.profile = bad, b.nprofile = 3;
+    Report("table: a flat last segment is refused", IndIndenterSetUp(&b) ? 0.0 : 1.0, 0.0);
+    bad[4] = 5, bad[5] = 2; /* r falling */
+    Report("table: a falling r is refused", IndIndenterSetUp(&b) ? 0.0 : 1.0, 0.0);
+  }
+}
+
 int main(int argc, char **argv)
 {
   IndIndenter ind;
@@ -279,6 +380,8 @@ int main(int argc, char **argv)
   CheckGradient("flat punch a = 100", &ind, 200);
   printf("Area functions\n");
   CheckAreas();
+  CheckEdgeRadius();
+  CheckTable();
   printf("Bi-potential projection\n");
   CheckProjection();
   {

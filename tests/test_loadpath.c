@@ -41,11 +41,30 @@ int main(int argc, char **argv)
   err = IndLoadPathReject(&lp, PETSC_COMM_SELF, "test");
   EXPECT(err == PETSC_ERR_NOT_CONVERGED, "the 11th cutback in a row must fail, returned %d", (int)err);
 
+  /* A limit (the contact's edge) shortens the next step only, not below the smallest increment, and a limit past
+     the target leaves it. */
+  PetscCall(IndLoadPathSetFromOptions(PETSC_COMM_SELF, PETSC_FALSE, &lp));
+  IndLoadPathLimit(&lp, 0.5);
+  EXPECT(PetscAbsReal(IndLoadPathTarget(&lp) - 0.1) < 1e-15, "a limit past the target moved it to %g",
+    (double)IndLoadPathTarget(&lp));
+  IndLoadPathLimit(&lp, 0.03);
+  EXPECT(PetscAbsReal(IndLoadPathTarget(&lp) - 0.03) < 1e-15, "a limit of 0.03 gave the target %g",
+    (double)IndLoadPathTarget(&lp));
+  IndLoadPathAccept(&lp, 2);
+  EXPECT(lp.cutbacks == 0 && PetscAbsReal(lp.dt - 0.045) < 1e-15, "a limited step is no cut-back and grows back");
+  IndLoadPathLimit(&lp, lp.t + 1e-9);
+  EXPECT(PetscAbsReal(lp.dt - lp.dt_min) < 1e-15, "a limit below -load_min_increment gave %g, not %g",
+    (double)lp.dt, (double)lp.dt_min);
+
   /* Non-physical settings are refused. */
   PetscCall(PetscOptionsSetValue(NULL, "-load_growth", "0.5"));
   err = IndLoadPathSetFromOptions(PETSC_COMM_SELF, PETSC_FALSE, &lp);
   EXPECT(err == PETSC_ERR_ARG_OUTOFRANGE, "-load_growth 0.5 must be refused");
   PetscCall(PetscOptionsClearValue(NULL, "-load_growth"));
+  PetscCall(PetscOptionsSetValue(NULL, "-load_edge_steps", "-1"));
+  err = IndLoadPathSetFromOptions(PETSC_COMM_SELF, PETSC_FALSE, &lp);
+  EXPECT(err == PETSC_ERR_ARG_OUTOFRANGE, "-load_edge_steps -1 must be refused");
+  PetscCall(PetscOptionsClearValue(NULL, "-load_edge_steps"));
   PetscCall(PetscOptionsSetValue(NULL, "-load_steps", "0"));
   err = IndLoadPathSetFromOptions(PETSC_COMM_SELF, PETSC_FALSE, &lp);
   EXPECT(err == PETSC_ERR_ARG_OUTOFRANGE, "-load_steps 0 must be refused");

@@ -114,6 +114,16 @@ PetscInt       IndContactGetSize(IndContact contact);
 PetscReal      IndContactGetSymmetry(IndContact contact);
 /* The indenter as the contact sees it (borrowed). */
 const IndIndenter *IndContactGetIndenter(IndContact contact);
+/* The spacing (nm) of the contact surface's nodes within radius r of the indenter's axis, the finest of the
+   largest around each radius (0: no node there), from the reference tributary areas: sqrt(A) on a 3D surface,
+   A / (2 pi r) on a section. */
+PetscReal      IndContactSpacing(IndContact contact, PetscReal r);
+/* The depth a loading step from depth0 may reach, at most depth1: the indenter's edge (IndIndenterEdgeRadius)
+   advances by at most 1/per_cell of the spacing within it (per_cell <= 0: depth1). */
+PetscReal      IndContactEdgeDepth(IndContact contact, PetscReal depth0, PetscReal depth1, PetscReal per_cell);
+/* How far a step from depth0 to depth1 moves that edge, in the surface's spacings within it (0 when it recedes, or
+   before it has passed the first spacing). */
+PetscReal      IndContactEdgeAdvance(IndContact contact, PetscReal depth0, PetscReal depth1);
 /* The indenter's depth at the committed state, nm. */
 PetscReal      IndContactGetCommittedDepth(IndContact contact);
 

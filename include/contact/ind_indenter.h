@@ -20,7 +20,8 @@ typedef enum {
   IND_INDENTER_BERKOVICH,   /* modified Berkovich: 3 faces at 65.27 deg to the axis */
   IND_INDENTER_VICKERS,     /* 4 faces at 68 deg */
   IND_INDENTER_CUBE_CORNER, /* 3 faces at 35.26 deg */
-  IND_INDENTER_FLAT         /* flat cylindrical punch of radius `radius` */
+  IND_INDENTER_FLAT,        /* flat cylindrical punch of radius `radius` */
+  IND_INDENTER_TABLE        /* of revolution, its height above the lowest point given as a table of the radius */
 } IndIndenterType;
 /* Names for PetscOptionsEnum(). */
 extern const char *const IndIndenterTypes[];
@@ -40,13 +41,18 @@ typedef struct {
   PetscReal       axis[2];  /* x, y of the axis, nm */
   PetscReal       surface;  /* z of the undeformed top surface, nm */
   PetscReal       depth;    /* depth of the lowest point below `surface`, nm */
+  /* The table's nprofile points (r, height), nm, r from 0 increasing, height from 0 not decreasing (borrowed);
+     straight between them and past the last point along the last segment, which must rise. */
+  const PetscReal *profile;
+  PetscInt         nprofile;
   /* Derived by IndIndenterSetUp: */
   PetscInt  nfaces;
   PetscReal m[IND_INDENTER_MAX_FACES][3]; /* outward unit normals of the core pyramid's faces */
 } IndIndenter;
 
 /* Fills the face angle and count of the pyramid types (when angle is 0, the standard one) and the
-   face normals. Returns 0, or 1 if a parameter is out of range (the caller names the option). */
+   face normals. Returns 0, or 1 if a parameter is out of range (the caller names the option), or a
+   table's points are not as IndIndenter says. */
 int IndIndenterSetUp(IndIndenter *ind);
 
 /* Signed gap (nm, positive open) of the point x and the unit normal n (gradient of the gap). */
@@ -60,3 +66,11 @@ void IndIndenterTangents(const PetscReal n[3], PetscReal t1[3], PetscReal t2[3])
    and sharp pyramids; for rounded pyramids the section's boundary is found along rays and
    integrated, to about 1e-12 relative. */
 PetscReal IndIndenterArea(const IndIndenter *ind, PetscReal hc);
+
+/* Radius (nm) of the circle where the indenter at depth h (nm) meets the undeformed surface, the edge a
+   contact without pile-up or sink-in would have; for a pyramid that of the cone of equal cross-section
+   areas and tip radius. A flat punch's is its radius at every depth. */
+PetscReal IndIndenterEdgeRadius(const IndIndenter *ind, PetscReal h);
+/* Its inverse: the depth at which that edge reaches radius r (PETSC_MAX_REAL: never, as for a sphere's
+   radius or a flat punch). */
+PetscReal IndIndenterEdgeDepth(const IndIndenter *ind, PetscReal r);

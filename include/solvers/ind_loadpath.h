@@ -31,6 +31,8 @@ typedef struct {
   PetscReal growth;  /* dt *= growth after an easy step, up to dt_max */
   PetscInt  easy_its; /* a step needing at most this many Newton iterations is easy */
   PetscInt  max_cutbacks; /* in a row, before giving up */
+  PetscReal edge_steps;   /* -load_edge_steps: loading steps at least this many per node spacing the contact's
+                             edge crosses (0: no limit) */
   PetscInt  accepted, cutbacks, cutbacks_in_a_row;
 } IndLoadPath;
 
@@ -61,6 +63,8 @@ PetscBool      IndLoadPathFieldStep(const IndLoadPath *path, PetscInt every);
 PetscInt       IndLoadPathStepsLeft(const IndLoadPath *path, PetscInt every, PetscInt limit);
 /* The load factor the next attempt should reach. */
 PetscReal      IndLoadPathTarget(const IndLoadPath *path);
+/* Caps the next step's end at t_max (not below the smallest increment): a limit of accuracy, not a failure. */
+void           IndLoadPathLimit(IndLoadPath *path, PetscReal t_max);
 void           IndLoadPathAccept(IndLoadPath *path, PetscInt newton_its);
 /* Cuts the increment; errors (naming the options) once it falls below dt_min or after
    max_cutbacks failures in a row. */

@@ -287,6 +287,16 @@ PetscErrorCode IndSummaryFinish(IndSummary s, const IndIndenter *ind, const IndR
     Put(e, &ne, "H_true_GPa", "hardness from the true area", "GPa", Hs, PETSC_FALSE);
     Put(e, &ne, "E_r_true_GPa", "reduced modulus from the true area", "GPa", Ers, PETSC_FALSE);
   }
+  if (info->contact) {
+    /* the load-step error grows with how far the contact's edge moves in one step (doc/load-steps.md) */
+    PetscReal adv = 0, d0 = 0;
+    for (PetscInt i = 0; i < s->n && s->pts[i].t <= 1.0 + 1e-12; ++i) {
+      adv = PetscMax(adv, IndContactEdgeAdvance(info->contact, d0, s->pts[i].depth));
+      d0  = s->pts[i].depth;
+    }
+    Put(e, &ne, "edge_advance_max", "largest advance of the contact's edge in a loading step", "node spacings", adv,
+      PETSC_FALSE);
+  }
   Put(e, &ne, "steps", "accepted steps", "", (PetscReal)s->n, PETSC_TRUE);
   Put(e, &ne, "cutbacks", "cut-back attempts", "", (PetscReal)last->cutbacks, PETSC_TRUE);
   Put(e, &ne, "newton", "Newton iterations", "", (PetscReal)newton, PETSC_TRUE);

@@ -1,4 +1,5 @@
 #include "contact_impl.h"
+#include "ind_indenter_profile.h"
 #include "contact_node.h"
 
 
@@ -382,10 +383,10 @@ PetscErrorCode IndContactCreate(IndMesh mesh, IndDisc disc, IndBC bc, IndContact
   PetscInt             nspec;
   const IndBCSpec     *spec;
   IndIndenter          ind;
-  PetscBool          has_type, has_radius, has_surface, has_sym, has_axis, has_rounding;
+  PetscBool          has_type, has_radius, has_surface, has_sym, has_axis, has_rounding, has_profile;
   PetscReal          angle = 0, rotation = 0, radius = 0, symmetry = 0;
   PetscInt           naxis = 2;
-  char               surface[IND_NAME_LEN] = "top";
+  char               surface[IND_NAME_LEN] = "top", profile[PETSC_MAX_PATH_LEN] = "";
   Vec                G, nodes;
   const PetscScalar *g, *x;
   PetscInt           n, rstart;
@@ -417,6 +418,9 @@ PetscErrorCode IndContactCreate(IndMesh mesh, IndDisc disc, IndBC bc, IndContact
     "required for sphere and flat; 0 (sharp) for the others", radius, &radius, &has_radius));
   PetscCall(IndOptionsReal("-indenter_angle", "Cone half-angle or pyramid face-to-axis angle (0: the standard one)",
     "degrees", NULL, angle, &angle, NULL));
+  PetscCall(IndOptionsString("-indenter_profile",
+    "-indenter_type table: a file of the indenter's height above its tip against the radius, r,height per line (nm)",
+    "file", NULL, profile, profile, sizeof(profile), &has_profile));
   PetscCall(IndOptionsReal("-indenter_rotation",
     "Pyramids: azimuth of the first face's normal; on a half or quarter model it must keep the symmetry planes mirror "
     "planes of the pyramid", "degrees", NULL, rotation, &rotation, NULL));
@@ -465,7 +469,15 @@ PetscErrorCode IndContactCreate(IndMesh mesh, IndDisc disc, IndBC bc, IndContact
     ind.type == IND_INDENTER_SPHERE || ind.type == IND_INDENTER_FLAT ? "> 0" : ">= 0", (double)radius);
   PetscCheck(angle >= 0 && angle < 90, comm, PETSC_ERR_ARG_OUTOFRANGE,
     "-indenter_angle must lie in (0, 90) degrees (0: the standard angle), got %g", (double)angle);
-  PetscCheck(!IndIndenterSetUp(&ind), comm, PETSC_ERR_ARG_OUTOFRANGE,
+  PetscCheck(has_profile == (ind.type == IND_INDENTER_TABLE ? PETSC_TRUE : PETSC_FALSE), comm, PETSC_ERR_ARG_WRONG,
+    has_profile ? "-indenter_profile is the table of -indenter_type table, not of %s"
+                : "-indenter_type %s needs -indenter_profile FILE (r,height per line, nm)", IndIndenterTypes[ind.type]);
+  if (has_profile && !IndHelpListing()) {
+    PetscCall(IndIndenterReadProfile(comm, profile, &c->profile, &ind.nprofile));
+    ind.profile = c->profile;
+  }
+  PetscCheck(!IndIndenterSetUp(&ind) || (ind.type == IND_INDENTER_TABLE && IndHelpListing()), comm,
+    PETSC_ERR_ARG_OUTOFRANGE,
     "-indenter_type %s: bad -indenter_radius or -indenter_angle", IndIndenterTypes[ind.type]);
   PetscCheck(!has_axis || naxis == 2, comm, PETSC_ERR_ARG_SIZ,
     "-indenter_axis needs two values x,y (nm), got %" PetscInt_FMT, naxis);
@@ -543,6 +555,7 @@ PetscErrorCode IndContactCreate(IndMesh mesh, IndDisc disc, IndBC bc, IndContact
   c->mesh     = mesh;
   c->disc     = disc;
   PetscCall(SurfaceEdgeAndSize(c, nspec, spec));
+  PetscCall(IndContactSpacingSetUp(c));
   PetscCall(PetscStrncpy(c->surface, surface, sizeof(c->surface)));
   *out        = c;
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -556,6 +569,8 @@ PetscErrorCode IndContactDestroy(IndContact *c)
   PetscCall(PetscFree5((*c)->R, (*c)->Rc, (*c)->L, (*c)->Uc, (*c)->status));
   PetscCall(PetscFree3((*c)->Lu, (*c)->fixed, (*c)->Rn));
   PetscCall(PetscFree((*c)->edge));
+  PetscCall(PetscFree((*c)->spacing));
+  PetscCall(PetscFree((*c)->profile));
   PetscCall(PetscFree(*c));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -59,7 +59,14 @@ struct _p_IndContact {
   PetscReal   top;           /* z of the surface's highest node, nm */
   PetscReal   zmin;          /* z of the mesh's lowest point, nm */
   PetscReal   surface_area;  /* projected area of the contact surface times the symmetry factor, nm^2 */
+  PetscInt    spacing_nbins; /* the surface's node spacing against the radius from the axis (contact_spacing.c) */
+  PetscReal   spacing_width; /* width of its bins, nm */
+  PetscReal  *spacing;       /* spacing_nbins values, nm (0: no node there) */
+  PetscReal  *profile;       /* -indenter_profile's table, which the indenter borrows (NULL: none) */
   IndMesh     mesh;          /* borrowed, for the surface's faces */
   IndDisc     disc;          /* borrowed */
   char        surface[IND_NAME_LEN];
 };
+
+/* contact_spacing.c: the table, from the reference tributary areas (at create). */
+PetscErrorCode IndContactSpacingSetUp(IndContact contact);

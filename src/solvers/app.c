@@ -14,6 +14,26 @@
 #include "ind_stepcsv.h"
 #include "runwrite.h"
 
+
+/* The loading steps -load_edge_steps adds to the uniform ones still to come (at most limit): the limit
+   depends on the depth alone, so it can be followed ahead without solving. */
+static PetscInt ExtraEdgeSteps(IndApp app, PetscInt limit)
+{
+  const IndLoadPath *lp = &app->path;
+  PetscReal          d;
+  PetscInt           n = 0, uniform;
+
+  if (!app->contact || app->control || lp->edge_steps <= 0 || lp->t >= 1.0 || lp->depth_max <= 0) return 0;
+  d       = IndContactGetCommittedDepth(app->contact);
+  uniform = (PetscInt)PetscCeilReal((1.0 - lp->t) / lp->dt_max - 1e-9);
+  while (d < lp->depth_max * (1 - 1e-12) && n < limit) {
+    const PetscReal next = PetscMin(d + lp->dt_max * lp->depth_max, lp->depth_max);
+    d = PetscMax(IndContactEdgeDepth(app->contact, d, next, lp->edge_steps),
+                 PetscMin(d + lp->dt_min * lp->depth_max, next));
+    n++;
+  }
+  return PetscMax(n - uniform, 0);
+}
 PetscErrorCode IndAppCreate(MPI_Comm comm, IndApp *out)
 {
   IndApp   app;
@@ -122,9 +142,12 @@ PetscErrorCode IndAppCreate(MPI_Comm comm, IndApp *out)
     PetscCall(IndOutputResume(app->output, npts, pts));
   }
 
-  PetscCall(
-    IndOutputCheckSize(app->output, IndLoadPathStepsLeft(&app->path, IndOutputFieldsEvery(app->output),
-                                                         IND_MAX_OUTPUT_STEPS + 1), &app->warnings));
+  {
+    const PetscInt every = IndOutputFieldsEvery(app->output);
+    PetscInt       left  = IndLoadPathStepsLeft(&app->path, every, IND_MAX_OUTPUT_STEPS + 1);
+    left += ExtraEdgeSteps(app, IND_MAX_OUTPUT_STEPS + 1) / every;
+    PetscCall(IndOutputCheckSize(app->output, PetscMin(left, IND_MAX_OUTPUT_STEPS + 1), &app->warnings));
+  }
   PetscCall(VecGetSize(app->U, &ndof));
   {
     const IndDiscLayout *L;
@@ -273,12 +296,31 @@ PetscErrorCode IndAppSolveStep(IndApp app, PetscReal t, IndStepResult *r)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode IndAppStep(IndApp app, IndStepResult *r)
+/* Depth control, loading: the step ends where the indenter's edge has moved 1/-load_edge_steps of the
+   surface's node spacing under the contact. Backward Euler integrates each step's plastic flow in one
+   jump; the error it leaves in P_max grows with the step and, under fixed steps, as the mesh is refined
+   (doc/load-steps.md): steps that follow the spacing keep it level. */
+static void LimitByContactEdge(IndApp app)
 {
   IndLoadPath    *lp = &app->path;
   const PetscReal t  = IndLoadPathTarget(lp);
+  PetscReal       d0, d1;
+
+  if (!app->contact || app->control || lp->edge_steps <= 0 || t > 1.0 || lp->depth_max <= 0) return;
+  if (IndLoadPathScratching(lp, t)) return;
+  d0 = IndContactGetCommittedDepth(app->contact);
+  d1 = IndContactEdgeDepth(app->contact, d0, lp->depth_max * IndLoadPathFactor(lp, t), lp->edge_steps);
+  IndLoadPathLimit(lp, d1 / lp->depth_max);
+}
+
+PetscErrorCode IndAppStep(IndApp app, IndStepResult *r)
+{
+  IndLoadPath *lp = &app->path;
+  PetscReal    t;
 
   PetscFunctionBeginUser;
+  LimitByContactEdge(app);
+  t = IndLoadPathTarget(lp);
   if (app->control) PetscCall(SolveLoadStep(app, t, r));
   else PetscCall(IndAppSolveStep(app, t, r));
   if (!r->converged) {

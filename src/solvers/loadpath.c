@@ -13,6 +13,7 @@ PetscErrorCode IndLoadPathSetFromOptions(MPI_Comm comm, PetscBool unload_default
   lp->unload       = unload_default;
   lp->unload_growth = 1.2;
   lp->force_rtol    = 1e-7;
+  lp->edge_steps    = 0;
   PetscOptionsBegin(comm, NULL, IND_TITLE "Load program and stepping (-load_*)", "Load");
   PetscCall(IndOptionsReal("-load_depth", "Largest indenter depth, reached at the end of loading", "nm",
     "required with -indenter_type", lp->depth_max, &lp->depth_max, NULL));
@@ -48,6 +49,9 @@ PetscErrorCode IndLoadPathSetFromOptions(MPI_Comm comm, PetscBool unload_default
     &lp->growth, NULL));
   PetscCall(IndOptionsInt("-load_easy_its", "Newton iterations at or below which a step is easy", NULL, lp->easy_its,
     &lp->easy_its, NULL));
+  PetscCall(IndOptionsReal("-load_edge_steps",
+    "Loading steps at least this many per node spacing the contact's edge crosses, so that the step error follows "
+    "the mesh (0: no limit)", "", NULL, lp->edge_steps, &lp->edge_steps, NULL));
   PetscCall(IndOptionsInt("-load_max_cutbacks", "Failed attempts in a row before the run stops", NULL, lp->max_cutbacks,
     &lp->max_cutbacks, NULL));
   PetscOptionsEnd();
@@ -82,6 +86,8 @@ PetscErrorCode IndLoadPathSetFromOptions(MPI_Comm comm, PetscBool unload_default
   PetscCheck(lp->growth >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-load_growth must be >= 1, got %g", (double)lp->growth);
   PetscCheck(lp->easy_its >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-load_easy_its must be >= 0, got %" PetscInt_FMT,
     lp->easy_its);
+  PetscCheck(lp->edge_steps >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-load_edge_steps must be >= 0, got %g",
+    (double)lp->edge_steps);
   PetscCheck(lp->max_cutbacks >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE,
     "-load_max_cutbacks must be >= 0, got %" PetscInt_FMT, lp->max_cutbacks);
   lp->dt = PetscMin(lp->dt_initial, lp->dt_max);
@@ -141,6 +147,11 @@ PetscReal IndLoadPathTarget(const IndLoadPath *lp)
   for (int k = 0; k < 4; ++k)
     if (lp->t < ends[k] && t >= ends[k] - IND_LOAD_END_TOL * lp->dt) return ends[k];
   return t;
+}
+
+void IndLoadPathLimit(IndLoadPath *lp, PetscReal t_max)
+{
+  if (t_max < IndLoadPathTarget(lp)) lp->dt = PetscMax(t_max - lp->t, lp->dt_min);
 }
 
 void IndLoadPathAccept(IndLoadPath *lp, PetscInt its)
