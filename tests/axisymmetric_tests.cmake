@@ -205,3 +205,12 @@ indent_script_test(bad_table_missing ${EXPECT_ERROR} "-indenter_profile '.*no_su
   ${INDENT} ${AXI_OK} -indenter_type table -indenter_profile ${BAD_DIR}/no_such.csv)
 indent_script_test(bad_table_without_profile ${EXPECT_ERROR} "-indenter_type table needs -indenter_profile FILE"
   ${INDENT} ${AXI_OK} -indenter_type table)
+
+# Load control on a section: the film under the cone reaches -load_force 10 uN (each step its share, to 1e-6),
+# unloads to zero force, and continues after a restart on the same curve.
+set(TEST_LABEL parallel)
+indent_script_test(axisymmetric_load_control_np2 ${RUN_LOAD_CONTROL} --workdir ${CMAKE_CURRENT_BINARY_DIR}/axi_load_control
+  --force 10 --limit 30 --rtol 1e-6 --restart-after 2 --unload-to-zero --newton-ratio 2
+  -- -options_file ${CMAKE_SOURCE_DIR}/inputs/cone_axisymmetric.opts -mesh_file ${CMAKE_SOURCE_DIR}/inputs/axisymmetric_film.geo
+  -mesh_geo_parameters h_tip=20,h_far=400,r_fine=200 -load_steps 4 -load_unload_steps 20 -output_fields 0 -quiet)
+set_tests_properties(axisymmetric_load_control_np2 PROPERTIES PROCESSORS 2)
