@@ -10,7 +10,10 @@ Readers:
   - Hysitron TriboScan .txt exports: a header, then the columns 'Depth (nm)', 'Load (uN)' ('µN'), 'Time (s)'.
   - CSV with a header naming a depth and a load column, each with its unit in brackets or after an underscore
     (depth_nm, "Depth (um)", load_uN, "Load (mN)"...), optionally a time column.
-NIGET's files are not read: no sample of the format was at hand to test a reader on.
+  - NIGET's own format (.niget; as NIGET's file-utils.c reads it): a first line '#NIGET a b c d', the 0-based
+    rows of the contact point, of the end of loading, of the end of the hold and of the end of unloading, then
+    one 'depth force' pair per line, depth in nm and force in mN, blank-separated (a decimal comma is read as a
+    point; lines that are not two numbers are skipped, as NIGET does). The segments are those rows.
 """
 import csv
 import math
@@ -88,6 +91,38 @@ def read_hysitron(path):
             cells = [c.replace("\xb5", "u").replace("Âu", "u") for c in cells]
             return _table([l.split("\t") for l in lines[k + 1:]], cells, path, k + 2)
     raise CurveError(f"{path}: no 'Depth (nm)' / 'Load (uN)' header: not a Hysitron TriboScan export")
+
+
+def read_niget(path):
+    with open(path, encoding="utf-8", errors="replace") as f:
+        lines = f.read().splitlines()
+    head = lines[0].split() if lines else []
+    try:
+        if len(head) != 5 or head[0] != "#NIGET":
+            raise ValueError
+        idx = [int(x) for x in head[1:]]
+    except ValueError:
+        raise CurveError(f"{path}: the first line is not '#NIGET a b c d' (four row numbers): not a NIGET file") \
+            from None
+    depth, load = [], []
+    for line in lines[1:]:
+        cells = line.replace(",", ".").split()
+        try:
+            d, p = float(cells[0]), float(cells[1])
+        except (ValueError, IndexError):
+            continue
+        depth.append(d)
+        load.append(p * 1e3)  # mN to uN
+    n = len(depth)
+    if not (0 <= idx[0] <= idx[1] <= idx[2] <= idx[3] < n):
+        raise CurveError(f"{path}: rows {' '.join(map(str, idx))} of the header do not rise within the {n} rows of "
+                         "data (contact, end of loading, end of hold, end of unloading)")
+    segments = [("loading", idx[0], idx[1])]
+    if idx[2] > idx[1]:
+        segments.append(("hold", idx[1], idx[2]))
+    if idx[3] > idx[2]:
+        segments.append(("unloading", idx[2], idx[3]))
+    return _curve(np.array(depth), np.array(load), np.full(n, math.nan), segments, path)
 
 
 def read_agilent(path, test=1):
@@ -210,11 +245,11 @@ def read(path, fmt="auto", test=1):
     if not os.path.isfile(path):
         raise CurveError(f"{path}: no such file")
     if fmt == "auto":
-        fmt = {".xls": "agilent", ".xlsx": "agilent", ".txt": "hysitron", ".csv": "csv"}.get(ext)
+        fmt = {".xls": "agilent", ".xlsx": "agilent", ".txt": "hysitron", ".csv": "csv", ".niget": "niget"}.get(ext)
         if fmt is None:
             raise CurveError(f"{path}: cannot tell the format from '{ext}': give --format")
     readers = {"agilent": lambda: read_agilent(path, test), "hysitron": lambda: read_hysitron(path),
-               "csv": lambda: read_csv(path)}
+               "csv": lambda: read_csv(path), "niget": lambda: read_niget(path)}
     if fmt not in readers:
         raise CurveError(f"--format {fmt}: not one of {', '.join(readers)}")
     return readers[fmt]()

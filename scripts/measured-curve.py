@@ -1,11 +1,12 @@
 #!/usr/bin/env python3
 """A measured load-depth curve into indent's CSV (depth_nm, load_uN), and its Oliver-Pharr analysis:
 
-  measured-curve.py FILE [--format auto|agilent|hysitron|csv] [--test N] [--compliance C] [--drift R]
+  measured-curve.py FILE [--format auto|agilent|hysitron|niget|csv] [--test N] [--compliance C] [--drift R]
                     [--out CURVE.csv] [--op --indent-op BIN (--area C0,C1,... | --indenter-type T) [-- OPTIONS]]
 
 FILE: an Agilent/Keysight/KLA NanoSuite export (.xls, .xlsx: --test picks the test, 1 by default), a Hysitron
-TriboScan .txt export, or a CSV whose header names a depth and a load column with their units. Depth is converted
+TriboScan .txt export, a NIGET file (.niget: '#NIGET a b c d', then depth in nm and force in mN), or a CSV whose
+header names a depth and a load column with their units. Depth is converted
 to nm and load to uN; the loading, hold and unloading segments are taken from the file (NanoSuite names them) or
 found from the load; a frame compliance C (nm/uN) and a thermal drift rate R (nm/s) are subtracted from the depth.
 With --op, indent-op analyses the written curve with the calibrated area function A(h_c) = C0 h_c^2 + C1 h_c +

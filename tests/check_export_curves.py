@@ -149,6 +149,13 @@ def check_niget(path, curve, summary, hold):
           f"start of unload {c}: t = {t_c:.10g} = 1 + load_hold {hold:g}, the next row unloads")
     check(d == n and abs(data[d, 0] - summary["final_depth_nm"]) <= 1e-9 * max(summary["final_depth_nm"], 1),
           f"end {d}: the last row, depth {data[d, 0]} nm = final_depth_nm")
+    # indent's own reader of measured curves (scripts/indentcurves.py) reads it back: nm, uN and the segments
+    sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "scripts"))
+    import indentcurves
+    back = indentcurves.read(path)
+    check(close(back["depth"][1:], curve["depth_nm"], 1e-11) and close(back["load"][1:], curve["load_uN"], 1e-11, 1e-12)
+          and [s[1:] for s in back["segments"]] == [(a, b)] + ([(b, c)] if c > b else []) + ([(c, d)] if d > c else []),
+          f"scripts/indentcurves.py reads it back: depth, load (uN) and segments {back['segments']}")
 
 
 def check_hysitron(path, curve):

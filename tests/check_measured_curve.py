@@ -14,8 +14,9 @@
    on the mean, keep it where it was measured.
 2. Synthetic curves with known values: a CSV in um and mN and a Hysitron .txt in nm and uN, with a hold and a
    thermal-drift hold: units converted, the segments found from the load, and a frame compliance and a drift
-   rate removed exactly.
-3. Bad files: a missing file, a curve that never unloads, an unknown unit: exit 1 and one line naming the file.
+   rate removed exactly; a NIGET file (mN, decimal commas, a text line) read with the segments of its header.
+3. Bad files: a missing file, a curve that never unloads, an unknown unit, a .niget without its header or with
+   rows that do not rise: exit 1 and one line naming the file.
 Prints ok or FAIL per check; exit 1 on any failure.
 """
 import argparse
@@ -96,6 +97,18 @@ def synthetic(args):
         f.write("Number of Points = %d\n\nDepth (nm)\tLoad (\xb5N)\tTime (s)\tDepth (V)\tLoad (V)\n" % len(h))
         for a, b, c in zip(hm, P, t):
             f.write(f"{a:.17g}\t{b:.17g}\t{c:.17g}\t0\t0\n")
+    # NIGET's format (its file-utils.c): '#NIGET a b c d' (rows of contact, end of loading, end of hold, end of
+    # unloading), then depth (nm) and force (mN), here with decimal commas and a line NIGET skips
+    niget_path = os.path.join(args.workdir, "curve.niget")
+    with open(niget_path, "w") as f:
+        f.write("#NIGET 0 39 45 65\n")
+        for k, (a, b) in enumerate(zip(hm, P / 1e3)):
+            f.write(f"{a:.17g}\t{b:.17g}\n".replace(".", ",") + ("a note NIGET skips\n" if k == 10 else ""))
+    c = indentcurves.read(niget_path)
+    kinds = [(s[0], s[1], s[2]) for s in c["segments"]]
+    check(kinds == [("loading", 0, 39), ("hold", 39, 45), ("unloading", 45, 65)], f"niget: segments {kinds}")
+    err = np.max(np.abs(c["depth"] - hm)) + np.max(np.abs(c["load"] - P)) / 2000
+    check(err < 1e-9 and len(c["depth"]) == len(hm), f"niget: mN to uN, decimal commas, a text line skipped: {err:.1e}")
     for path, fmt in ((csv_path, "csv"), (txt_path, "hysitron")):
         c = indentcurves.correct(indentcurves.read(path, fmt), comp, drift)
         kinds = [(s[0], s[2] - s[1] + 1) for s in c["segments"]]
@@ -114,8 +127,15 @@ def bad(args):
     furlong = os.path.join(args.workdir, "furlong.csv")
     with open(furlong, "w") as f:
         f.write("depth (furlong),load (uN)\n1,2\n")
+    notniget = os.path.join(args.workdir, "plain.niget")
+    with open(notniget, "w") as f:
+        f.write("1 2\n3 4\n")
+    badrows = os.path.join(args.workdir, "rows.niget")
+    with open(badrows, "w") as f:
+        f.write("#NIGET 0 5 3 9\n" + "".join(f"{k} {k}\n" for k in range(10)))
     for path, say in ((os.path.join(args.workdir, "nowhere.csv"), "no such file"),
-                      (never, "no unloading branch"), (furlong, "unit 'furlong'")):
+                      (never, "no unloading branch"), (furlong, "unit 'furlong'"),
+                      (notniget, "not a NIGET file"), (badrows, "do not rise")):
         run = measured(args, path)
         lines = run.stderr.strip().splitlines()
         check(run.returncode == 1 and len(lines) == 1 and lines[0].startswith("measured-curve.py: error: ")
