@@ -214,3 +214,10 @@ indent_script_test(axisymmetric_load_control_np2 ${RUN_LOAD_CONTROL} --workdir $
   -- -options_file ${CMAKE_SOURCE_DIR}/inputs/cone_axisymmetric.opts -mesh_file ${CMAKE_SOURCE_DIR}/inputs/axisymmetric_film.geo
   -mesh_geo_parameters h_tip=20,h_far=400,r_fine=200 -load_steps 4 -load_unload_steps 20 -output_fields 0 -quiet)
 set_tests_properties(axisymmetric_load_control_np2 PROPERTIES PROCESSORS 2)
+# A table indenter's checkpoint keeps its points: a restart with the file unchanged continues, with one height
+# changed it is refused in one line.
+set(TEST_LABEL production)
+indent_script_test(restart_table_indenter ${CMAKE_CURRENT_SOURCE_DIR}/check_table_restart.sh $<TARGET_FILE:indent>
+  ${AXI_TABLE} ${CMAKE_CURRENT_BINARY_DIR}/restart_table -- -options_file ${CMAKE_SOURCE_DIR}/inputs/cone_axisymmetric.opts
+  -mesh_file ${CMAKE_SOURCE_DIR}/inputs/axisymmetric_film.geo -mesh_geo_parameters h_tip=20,h_far=400,r_fine=200
+  -load_depth 20 -load_steps 4 -load_unload_steps 20 -output_fields 0)

@@ -1,8 +1,8 @@
 #include "contact_impl.h"
 
 /* The contact's part of the state: the committed reactions and node displacements (by node, in the
-   displacement's layout), the penalty scale (which the fixed point may have halved) and the indenter's
-   committed position. */
+   displacement's layout), the penalty scale (which the fixed point may have halved), the indenter's
+   committed position and a table indenter's points (checked on reading, not restored). */
 
 /* a (3 per contact node) into the contact nodes' rows of the global vector G, zero elsewhere, or back */
 static PetscErrorCode Scatter(IndContact c, PetscReal *a, Vec G, PetscBool into)
@@ -34,6 +34,20 @@ PetscErrorCode IndContactState(void *obj, IndStateFile f)
 
   PetscFunctionBeginUser;
   PetscCall(IndStateReals(f, "scalars", 4, s));
+  if (c->profile) {
+    /* the table is read from a file the options only name: a restart must find the same points in it */
+    PetscInt   n = 2 * c->indenter.nprofile;
+    PetscReal *v = c->profile;
+    PetscCall(IndStateRealArray(f, "profile", &n, &v));
+    if (IndStateReading(f)) {
+      PetscBool same = n == 2 * c->indenter.nprofile ? PETSC_TRUE : PETSC_FALSE;
+      for (PetscInt k = 0; same && k < n; ++k) same = v[k] == c->profile[k] ? PETSC_TRUE : PETSC_FALSE;
+      PetscCall(PetscFree(v));
+      PetscCheck(same, c->comm, PETSC_ERR_USER_INPUT,
+        "-indenter_profile: the file's points are not those the checkpoint was made with (%" PetscInt_FMT
+        " points now, %" PetscInt_FMT " then): restart with the file as it was", c->indenter.nprofile, n / 2);
+    }
+  }
   PetscCall(IndDiscGetDM(c->disc, &dm));
   PetscCall(DMGetGlobalVector(dm, &G));
   for (int k = 0; k < 2; ++k) {
