@@ -3,11 +3,11 @@
 
   /usr/bin/python3 scripts/revolve.py RUN_DIR [--segments 36] [--angle 360] [--out DIR]
 
-Reads RUN_DIR/indent.h5 (and the steps' times from load_displacement.csv) of a run on a section (indent writes it in the plane y = 0, x the radius, z the
-axis) and writes DIR/revolved.h5 and DIR/revolved.xdmf (DIR: RUN_DIR by default): every step of the
-section's fields on the solid swept by turning the section about z through --angle degrees in --segments
-equal segments. Triangles become wedges and quadrilaterals hexahedra (cells on the axis have a degenerate
-edge there). Values are the section's, in the 3D frame: a vertex's displacement (u_r, 0, u_z) becomes
+Reads RUN_DIR/indent.h5 (and the steps' times from load_displacement.csv) of a run on a section (indent writes it
+in the plane y = 0, x the radius, z the axis) and writes DIR/revolved.h5 and DIR/revolved.xdmf (DIR: RUN_DIR by
+default): every step of the section's fields on the solid swept by turning the section about z through --angle
+degrees in --segments equal segments. Triangles become wedges and quadrilaterals hexahedra (cells on the axis
+have a degenerate edge there). Values are the section's, in the 3D frame: a vertex's displacement (u_r, 0, u_z) becomes
 (u_r cos t, u_r sin t, u_z) at angle t; a cell's stress and strain (Voigt xx, yy, zz, xy, yz, xz, with yy the
 hoop component and strain shears engineering) are turned by the segment's middle angle; scalars are
 copied. The revolved solid's straight edges make its volume sin(d)/d times the ring's, d = angle / segments.

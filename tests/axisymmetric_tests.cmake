@@ -129,7 +129,8 @@ set(TEST_LABEL "input;faults")
 set(AXI_OK -mesh_file ${MESHDIR}/axi_patch_quad.msh -domain_young 100 -domain_poisson 0.3 -bc_fixed bottom
   -load_depth 0.01 -output_fields 0 -quiet)
 indent_script_test(bad_axisymmetric_pyramid ${EXPECT_ERROR}
-  "-indenter_type berkovich is a pyramid, which the axisymmetric model .a 2D mesh. cannot represent.+the cone of the same projected area is -indenter_type cone -indenter_angle 70.3"
+  "-indenter_type berkovich is a pyramid, which the axisymmetric model .a 2D mesh. cannot represent.+the cone of \
+the same projected area is -indenter_type cone -indenter_angle 70.3"
   ${INDENT} ${AXI_OK} -indenter_type berkovich)
 indent_script_test(bad_axisymmetric_cube_corner ${EXPECT_ERROR} "-indenter_type cone -indenter_angle 42.28"
   ${INDENT} ${AXI_OK} -indenter_type cube_corner)
@@ -172,7 +173,8 @@ indent_script_test(axisymmetric_multilayer_vs_film ${RUN_CURVES_INDENT} --workdi
 set(TEST_LABEL parallel)
 indent_script_test(axisymmetric_multilayer_np12 ${RUN_CURVES_INDENT} --workdir ${ML_DIR}/axi_np12 --np 1,2 --rtol 1e-8
   -- -options_file ${CMAKE_SOURCE_DIR}/inputs/multilayer_axisymmetric.opts
-  -mesh_file ${CMAKE_SOURCE_DIR}/inputs/axisymmetric_multilayer.geo -mesh_geo_parameters n_layers=2,t1=100,t2=200,h_tip=20,h_far=400 -load_depth 20 -load_steps 4 -load_unload_steps 20
+  -mesh_file ${CMAKE_SOURCE_DIR}/inputs/axisymmetric_multilayer.geo
+  -mesh_geo_parameters n_layers=2,t1=100,t2=200,h_tip=20,h_far=400 -load_depth 20 -load_steps 4 -load_unload_steps 20
   -contact_uzawa_rtol 1e-10 -snes_rtol 1e-12 -output_fields 0 -quiet)
 set_tests_properties(axisymmetric_multilayer_vs_film axisymmetric_multilayer_np12 PROPERTIES PROCESSORS 2)
 
@@ -185,7 +187,8 @@ indent_script_test(axisymmetric_table_vs_cone ${RUN_CURVES_INDENT} --workdir ${C
   --np 2 --rtol 1e-5 --atol 1e-4
   --variant "cone:-indenter_type cone"
   --variant "table:-indenter_type table -indenter_profile ${AXI_TABLE}"
-  -- -options_file ${CMAKE_SOURCE_DIR}/inputs/cone_axisymmetric.opts -mesh_file ${CMAKE_SOURCE_DIR}/inputs/axisymmetric_film.geo
+  -- -options_file ${CMAKE_SOURCE_DIR}/inputs/cone_axisymmetric.opts
+  -mesh_file ${CMAKE_SOURCE_DIR}/inputs/axisymmetric_film.geo
   -mesh_geo_parameters h_tip=5,h_far=400,r_fine=100 -load_depth 20 -load_steps 8 -load_edge_steps 0
   -load_unload_steps 20 -output_fields 0 -quiet)
 set_tests_properties(axisymmetric_table_vs_cone PROPERTIES PROCESSORS 2)
@@ -195,7 +198,8 @@ file(WRITE ${BAD_DIR}/table_one.csv "0,0\n")
 file(WRITE ${BAD_DIR}/table_falling.csv "0,0\n10,5\n20,4\n")
 file(WRITE ${BAD_DIR}/table_offset.csv "1,0\n10,5\n")
 foreach(spec "text;line 3: not a pair of numbers" "one;1 point.s.; a profile needs at least 2"
-             "falling;line 3: the height must not fall away from the tip" "offset;line 1: the first point must be the tip")
+             "falling;line 3: the height must not fall away from the tip"
+             "offset;line 1: the first point must be the tip")
   list(GET spec 0 name)
   list(GET spec 1 why)
   indent_script_test(bad_table_${name} ${EXPECT_ERROR} "-indenter_profile '.*table_${name}.csv'.*${why}"
@@ -209,15 +213,18 @@ indent_script_test(bad_table_without_profile ${EXPECT_ERROR} "-indenter_type tab
 # Load control on a section: the film under the cone reaches -load_force 10 uN (each step its share, to 1e-6),
 # unloads to zero force, and continues after a restart on the same curve.
 set(TEST_LABEL parallel)
-indent_script_test(axisymmetric_load_control_np2 ${RUN_LOAD_CONTROL} --workdir ${CMAKE_CURRENT_BINARY_DIR}/axi_load_control
+indent_script_test(axisymmetric_load_control_np2 ${RUN_LOAD_CONTROL}
+  --workdir ${CMAKE_CURRENT_BINARY_DIR}/axi_load_control
   --force 10 --limit 30 --rtol 1e-6 --restart-after 2 --unload-to-zero --newton-ratio 2
-  -- -options_file ${CMAKE_SOURCE_DIR}/inputs/cone_axisymmetric.opts -mesh_file ${CMAKE_SOURCE_DIR}/inputs/axisymmetric_film.geo
+  -- -options_file ${CMAKE_SOURCE_DIR}/inputs/cone_axisymmetric.opts
+  -mesh_file ${CMAKE_SOURCE_DIR}/inputs/axisymmetric_film.geo
   -mesh_geo_parameters h_tip=20,h_far=400,r_fine=200 -load_steps 4 -load_unload_steps 20 -output_fields 0 -quiet)
 set_tests_properties(axisymmetric_load_control_np2 PROPERTIES PROCESSORS 2)
 # A table indenter's checkpoint keeps its points: a restart with the file unchanged continues, with one height
 # changed it is refused in one line.
 set(TEST_LABEL production)
 indent_script_test(restart_table_indenter ${CMAKE_CURRENT_SOURCE_DIR}/check_table_restart.sh $<TARGET_FILE:indent>
-  ${AXI_TABLE} ${CMAKE_CURRENT_BINARY_DIR}/restart_table -- -options_file ${CMAKE_SOURCE_DIR}/inputs/cone_axisymmetric.opts
+  ${AXI_TABLE} ${CMAKE_CURRENT_BINARY_DIR}/restart_table
+  -- -options_file ${CMAKE_SOURCE_DIR}/inputs/cone_axisymmetric.opts
   -mesh_file ${CMAKE_SOURCE_DIR}/inputs/axisymmetric_film.geo -mesh_geo_parameters h_tip=20,h_far=400,r_fine=200
   -load_depth 20 -load_steps 4 -load_unload_steps 20 -output_fields 0)

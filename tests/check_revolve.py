@@ -70,7 +70,8 @@ def check(run_dir, out, segments, angle):
         ncopy = segments if full else segments + 1
         d = math.radians(angle) / segments
         if len(pts) != ncopy * len(x) or len(rc) != segments * len(cells):
-            print(f"FAIL: {len(pts)} vertices and {len(rc)} cells, not {ncopy} x {len(x)} and {segments} x {len(cells)}")
+            print(f"FAIL: {len(pts)} vertices and {len(rc)} cells, not {ncopy} x {len(x)} and "
+                  f"{segments} x {len(cells)}")
             return False
         if not np.array_equal(r["fields/step"][:].reshape(-1), s["fields/step"][:].reshape(-1)):
             print("FAIL: the revolved steps are not the run's")

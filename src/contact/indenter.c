@@ -236,8 +236,8 @@ static void ProfileCore(const IndIndenter *ind, const PetscReal y[3], PetscReal 
   /* the smoothed normal at q: blend with the neighbour's over w from each corner */
   for (int k = 0; k < 3; ++k) {
     const PetscInt j = iq - 1 + k;
-    L[k] = j < 0 ? PETSC_MAX_REAL : j >= ns ? PETSC_MAX_REAL
-                                            : PetscSqrtReal(PetscSqr(p[2 * j + 2] - p[2 * j]) + PetscSqr(p[2 * j + 3] - p[2 * j + 1]));
+    L[k] = j < 0 || j >= ns ? PETSC_MAX_REAL
+                            : PetscSqrtReal(PetscSqr(p[2 * j + 2] - p[2 * j]) + PetscSqr(p[2 * j + 3] - p[2 * j + 1]));
   }
   L[0] = iq == 0 ? L[1] : L[0];
   w[0] = iq == 0 ? PetscMin(0.5 * L[1], ind->rounding) : 0.5 * PetscMin(L[0], L[1]);
