@@ -14,6 +14,13 @@
 #include "ind_stepcsv.h"
 #include "runwrite.h"
 
+/* Whether -load_edge_steps limits a step ending at t: depth control, loading, an indenter. */
+static PetscBool EdgeLimitApplies(IndApp app, PetscReal t)
+{
+  const IndLoadPath *lp = &app->path;
+  return app->contact && !app->control && lp->edge_steps > 0 && t <= 1.0 && lp->depth_max > 0 ? PETSC_TRUE
+                                                                                              : PETSC_FALSE;
+}
 
 /* The loading steps -load_edge_steps adds to the uniform ones still to come (at most limit): the limit
    depends on the depth alone, so it can be followed ahead without solving. */
@@ -23,7 +30,7 @@ static PetscInt ExtraEdgeSteps(IndApp app, PetscInt limit)
   PetscReal          d;
   PetscInt           n = 0, uniform;
 
-  if (!app->contact || app->control || lp->edge_steps <= 0 || lp->t >= 1.0 || lp->depth_max <= 0) return 0;
+  if (lp->t >= 1.0 || !EdgeLimitApplies(app, lp->t)) return 0;
   d       = IndContactGetCommittedDepth(app->contact);
   uniform = (PetscInt)PetscCeilReal((1.0 - lp->t) / lp->dt_max - 1e-9);
   while (d < lp->depth_max * (1 - 1e-12) && n < limit) {
@@ -34,6 +41,7 @@ static PetscInt ExtraEdgeSteps(IndApp app, PetscInt limit)
   }
   return PetscMax(n - uniform, 0);
 }
+
 PetscErrorCode IndAppCreate(MPI_Comm comm, IndApp *out)
 {
   IndApp   app;
@@ -306,8 +314,7 @@ static void LimitByContactEdge(IndApp app)
   const PetscReal t  = IndLoadPathTarget(lp);
   PetscReal       d0, d1;
 
-  if (!app->contact || app->control || lp->edge_steps <= 0 || t > 1.0 || lp->depth_max <= 0) return;
-  if (IndLoadPathScratching(lp, t)) return;
+  if (!EdgeLimitApplies(app, t)) return; /* not the hold, the scratch (after t = 1) or the unloading */
   d0 = IndContactGetCommittedDepth(app->contact);
   d1 = IndContactEdgeDepth(app->contact, d0, lp->depth_max * IndLoadPathFactor(lp, t), lp->edge_steps);
   IndLoadPathLimit(lp, d1 / lp->depth_max);
