@@ -228,3 +228,17 @@ indent_script_test(restart_table_indenter ${CMAKE_CURRENT_SOURCE_DIR}/check_tabl
   -- -options_file ${CMAKE_SOURCE_DIR}/inputs/cone_axisymmetric.opts
   -mesh_file ${CMAKE_SOURCE_DIR}/inputs/axisymmetric_film.geo -mesh_geo_parameters h_tip=20,h_far=400,r_fine=200
   -load_depth 20 -load_steps 4 -load_unload_steps 20 -output_fields 0)
+
+# The section's direct solve factors the free rows alone (src/solvers/heldlu.c): J x = b to 1e-10 on the first
+# set-up, after a free row that was only on its diagonal couples again (PCREDISTRIBUTE, which keeps the rows it
+# found first, is printed beside it) and after a condition more changed the held rows; the free block is the
+# dofs less the held ones.
+add_executable(test_held_lu test_held_lu.c)
+target_link_libraries(test_held_lu PRIVATE indentcore)
+target_include_directories(test_held_lu PRIVATE ${CMAKE_SOURCE_DIR}/src/solvers)
+foreach(np 1 2)
+  indent_mpi_test(NAME unit_held_lu_np${np} NP ${np} LABELS unit COMMAND $<TARGET_FILE:test_held_lu>
+    -options_file ${CMAKE_SOURCE_DIR}/inputs/fit-sphere.opts -mesh_file ${CMAKE_SOURCE_DIR}/inputs/axisymmetric_film.geo
+    -mesh_geo_parameters h_tip=40,h_far=400,r_fine=200
+    -output_fields 0 -quiet -output_dir ${CMAKE_CURRENT_BINARY_DIR}/held_lu_np${np} -output_overwrite)
+endforeach()

@@ -2,6 +2,7 @@
 #include "ind_solver.h"
 #include "ind_options.h"
 #include "bordered.h"
+#include "heldlu.h"
 
 /* The free rows see the prescribed values, not U's, on constrained dofs: the residual of a free row
    then does not depend on constrained entries of U, so the Jacobian with those rows and columns
@@ -146,10 +147,10 @@ static PetscErrorCode ConvergedUnlessStalled(SNES snes, PetscInt it, PetscReal x
    43k dofs, 2 ranks) GAMG took 128 GMRES iterations per Newton iteration (the hoop stiffness, E / r^2 beside the
    axis, is not the Laplacian-like operator it coarsens) and the run 212 s; MUMPS's LU 25 s. A factorization
    serves one Newton iteration: a lagged one would be one sweep of a stale inverse, and Newton converge linearly
-   (278 Newton iterations instead of 151). PCREDISTRIBUTE, which would spare the LU the hoop unknowns' rows, is
-   not exact once the contact's unsymmetric rows are active (GMRES needed 3 and more iterations with it):
-   doc/axisymmetric.md. Without MUMPS the 3D defaults stay. */
-static PetscErrorCode AxisymmetricSolverDefaults(SNES snes)
+   (278 Newton iterations instead of 151). The held rows (the hoop third of the unknowns everywhere, the axis's
+   radial ones, the user's conditions) are left out of the factorization (src/solvers/heldlu.h). Without MUMPS
+   the 3D defaults stay. */
+static PetscErrorCode AxisymmetricSolverDefaults(SNES snes, IndBC bc)
 {
   KSP       ksp;
   PC        pc;
@@ -161,8 +162,7 @@ static PetscErrorCode AxisymmetricSolverDefaults(SNES snes)
   PetscCall(SNESGetKSP(snes, &ksp));
   PetscCall(KSPSetType(ksp, KSPPREONLY));
   PetscCall(KSPGetPC(ksp, &pc));
-  PetscCall(PCSetType(pc, PCLU));
-  PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
+  PetscCall(IndHeldLUSetUp(pc, bc));
   PetscCall(SNESSetLagPreconditioner(snes, 1));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -234,7 +234,7 @@ PetscErrorCode IndSolverCreate(DM dm, IndAssembly assembly, IndBC bc, IndContact
      indefinite preconditioner in 7 of 13 steps of inputs/plastic_block.opts. Smoothers that estimate
      their own at each setup: no failure, and still 30% faster than rebuilding the interpolation. */
   PetscCall(PCGAMGSetUseSAEstEig(pc, PETSC_FALSE));
-  if (IndAssemblyIsAxisymmetric(assembly)) PetscCall(AxisymmetricSolverDefaults(s->snes));
+  if (IndAssemblyIsAxisymmetric(assembly)) PetscCall(AxisymmetricSolverDefaults(s->snes, bc));
   if (contact) {
     /* Semi-smooth Newton is only locally convergent: at a reversal (the top of an unloading curve)
        full steps cycled between stick and slip until the step was cut, three times in a row on the
