@@ -297,6 +297,16 @@ PetscErrorCode IndDiscCreate(IndMesh mesh, IndDisc *out)
     "-disc_quadrature_order must lie in [0, 12], got %" PetscInt_FMT, qorder);
 
   PetscCall(PetscFECreateLagrange(comm, disc->dim, 3, mesh->simplex, disc->degree, qorder, &disc->fe));
+  if (qorder == PETSC_DETERMINE && mesh->simplex && disc->dim == 2) {
+    /* A section's triangles: the fully symmetric rule of degree 2k (3 points for P1, 6 for P2) instead of
+       PETSc's conical product (4 and 9). On the film under the cone (10 nm P1 cells, 2 ranks) P_max moved by
+       1.7e-7 relative and the run took 8.2 s instead of 9.2 s; P2 with 20 nm cells: 4.7e-5, 9.0 s against
+       11.1 s. Every point costs the finite-strain kinematics and the return map. */
+    PetscQuadrature q;
+    PetscCall(PetscDTSimplexQuadrature(2, 2 * disc->degree, PETSCDTSIMPLEXQUAD_MINSYM, &q));
+    PetscCall(PetscFESetQuadrature(disc->fe, q));
+    PetscCall(PetscQuadratureDestroy(&q));
+  }
   PetscCall(PetscObjectSetName((PetscObject)disc->fe, "displacement"));
   PetscCall(DMSetField(disc->dm, 0, NULL, (PetscObject)disc->fe));
   PetscCall(DMCreateDS(disc->dm));
