@@ -97,6 +97,10 @@ def parse_args(argv):
     ap.add_argument("--spread-limit", type=float, default=0.05,
                     help="largest 95%% spread (fraction of the bounds' range) of a combination of parameters "
                          "still called determined (default 0.05)")
+    ap.add_argument("--model-error", type=float, default=0.005,
+                    help="the model's own load error (its mesh and load steps), RMS fraction of P_max: a fit whose "
+                         "weakest combination of parameters it moves more than the spread limit is reported as "
+                         "not robust (default 0.005; 0: not checked)")
     ap.add_argument("--jobs", type=int, default=0, help="forward runs at once (default: cores / np)")
     ap.add_argument("--np", type=int, default=1, help="ranks per forward run (default 1)")
     ap.add_argument("--indent", default=os.path.join(REPO, "build", "indent"), help="indent's executable")
@@ -110,6 +114,8 @@ def parse_args(argv):
         ap.error("no --curve given")
     if not args.param:
         ap.error("no --param given")
+    if not args.model_error >= 0:
+        ap.error(f"--model-error {args.model_error:g}: a load error, a fraction of P_max >= 0 (0.005 is 0.5%)")
     return args
 
 
@@ -323,6 +329,7 @@ def write_outputs(args, fit, sol, res):
         "misfit_rms": misfit.rms(r, fit.w2), "evaluations": len(fit.history), "optimizer": sol.message,
         "condition": res["condition"], "weak_direction": res["weak_direction"].tolist(),
         "weak_spread": res["weak_spread"], "distinguishable": res["distinguishable"], "noise": res["noise"],
+        "model_error": res["model_error"], "model_spread": res["model_spread"], "robust": res["robust"],
         "forward_runs": {"run": cnt["run"], "cached": cnt["cached"], "failed": cnt["failed"],
                          "seconds": cnt["seconds"]},
         "wall_seconds": time.time() - fit.t0,
@@ -428,7 +435,8 @@ def main(argv):
         sol = least_squares(fit.fun, u0, jac=fit.jac, bounds=(0.0, 1.0), method=args.method, x_scale=1.0,
                             ftol=args.tol, xtol=args.tol, gtol=1e-10, max_nfev=args.max_evals)
         J = fit.jac(sol.x)
-        res = stats.analyse(J, fit.residual(sol.x), prm, sol.x, sigma, args.spread_limit)
+        res = stats.analyse(J, fit.residual(sol.x), prm, sol.x, sigma, args.spread_limit, args.model_error,
+                            fit.w2)
     except FitError as e:
         fit.runner.shutdown()
         print(f"indent-fit: error: {e}", file=sys.stderr)

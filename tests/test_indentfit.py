@@ -107,6 +107,32 @@ class Stats(unittest.TestCase):
         self.assertIn("without limit", "\n".join(stats.verdict_lines(res, p)))
 
 
+    def test_model_error(self):
+        # Two nearly collinear columns and little noise: the noise determines both, but a load error of the
+        # model's own of 0.5% moves their weak combination by model_error sqrt(w2) / sigma_min, which the
+        # verdict must call out; well separated columns pass both tests.
+        rng = np.random.default_rng(5)
+        c = rng.uniform(0.5, 1.5, 200)
+        p = [params.parse("a=oa:0:1"), params.parse("b=ob:0:1")]
+        r = 1e-4 * rng.standard_normal(200)
+        # columns as the fit scales them: a load difference over P_max over the root of the point count
+        J = np.column_stack([c, c + 0.05 * rng.standard_normal(200)]) / np.sqrt(200)
+        res = stats.analyse(J, r, p, [0.5, 0.5], model_error=0.005, w2=2.0)
+        want = 0.005 * np.sqrt(2.0) / np.linalg.svd(J, compute_uv=False)[-1]
+        self.assertAlmostEqual(res["model_spread"], want, delta=1e-12 * want)
+        self.assertTrue(res["distinguishable"])
+        self.assertFalse(res["robust"])
+        text = "\n".join(stats.verdict_lines(res, p))
+        self.assertIn("not against the model's own error", text)
+        self.assertIn("second indenter", text)
+        J = np.column_stack([c, rng.uniform(-1, 1, 200)]) / np.sqrt(200)
+        res = stats.analyse(J, r, p, [0.5, 0.5], model_error=0.005, w2=2.0)
+        self.assertTrue(res["distinguishable"] and res["robust"])
+        self.assertIn("from the model itself moves none more", "\n".join(stats.verdict_lines(res, p)))
+        # model_error 0: not checked
+        self.assertTrue(stats.analyse(np.column_stack([c, c + 1e-3 * c]), r, p, [0.5, 0.5])["robust"])
+
+
 class Dao(unittest.TestCase):
     def test_pi1_gives_daos_kick_constant(self):
         # Dao et al.'s own example of elastic-perfectly plastic aluminium: E 70 GPa, nu 0.3, yield 0.3 GPa,

@@ -12,14 +12,22 @@ and change the curves by less than the noise: the right singular vector of J's s
 sigma_min is that combination, and t s / sigma_min is how far (in u, fractions of the bounds' ranges) it
 may move inside the 95% interval. Chen et al. (J. Mech. Phys. Solids 55 (2007) 1618) built such
 "mystical" materials, whose Berkovich curves coincide.
+
+The noise is not the only error: the model's own (its mesh, its load steps) is a load error of its own,
+smooth along the curve, which no count of points averages away. A load error of e (RMS fraction of P_max)
+is a residual vector of norm e sqrt(w2), w2 the sum of the branches' squared weights, and it can move the
+weakest combination by e sqrt(w2) / sigma_min(J): when that is more than the spread limit, the values owe as
+much to the model's error as to the material.
 """
 import numpy as np
 from scipy import stats as spstats
 
 
-def analyse(J, r, params, u, noise_sigma=None, spread_limit=0.05):
+def analyse(J, r, params, u, noise_sigma=None, spread_limit=0.05, model_error=0.0, w2=1.0):
     """J: m x p Jacobian in u; r: residuals at the optimum; noise_sigma: residual-unit noise per residual
-    (array of m) or None for the residuals' own scatter. Returns a dict (see the keys at the end)."""
+    (array of m) or None for the residuals' own scatter; model_error: the model's own load error (RMS fraction
+    of P_max) and w2 the sum of the fitted branches' squared weights. Returns a dict (see the keys at the
+    end)."""
     m, p = J.shape
     dof = max(m - p, 1)
     if noise_sigma is None:
@@ -43,11 +51,17 @@ def analyse(J, r, params, u, noise_sigma=None, spread_limit=0.05):
     weak = Vt[-1] * np.sign(Vt[-1][np.argmax(np.abs(Vt[-1]))])
     spread = float(t * inv[-1])
     at_bound = [pp.name for pp, uu in zip(params, u) if uu <= 1e-6 or uu >= 1 - 1e-6]
+    smin = np.linalg.svd(J, compute_uv=False)[-1]
+    Vm = np.linalg.svd(J)[2][-1]
+    model_weak = Vm * np.sign(Vm[np.argmax(np.abs(Vm))])
+    model_spread = float(model_error * np.sqrt(w2) / smin) if smin > 0 else float("inf")
     return {
         "values": x, "sd": sd, "ci95": t * sd, "corr": corr, "cov": cov, "t": t, "dof": dof, "noise": noise,
         "singular_values": sv, "condition": float(sv[0] / sv[-1]) if sv[-1] > 0 else float("inf"),
         "weak_direction": weak, "weak_spread": spread,
         "distinguishable": bool(spread <= spread_limit), "spread_limit": spread_limit, "at_bound": at_bound,
+        "model_error": model_error, "model_spread": model_spread, "model_weak_direction": model_weak,
+        "robust": bool(model_spread <= spread_limit),
     }
 
 
@@ -61,6 +75,19 @@ def verdict_lines(res, params):
         lines.append(f"the curves determine every parameter: no combination moves more than "
                      f"{100 * res['weak_spread']:.2g}% of the bounds' ranges within the 95% interval "
                      f"(limit {100 * res['spread_limit']:.2g}%)")
+        if res["robust"]:
+            if res["model_error"] > 0:
+                lines.append(f"  and a load error of {100 * res['model_error']:.2g}% of P_max from the model itself "
+                             f"moves none more than {100 * res['model_spread']:.2g}% of them")
+            return lines
+        parts = [f"{'+' if c >= 0 else '-'}{abs(c):.2f} {p.name}" for p, c in zip(params, res["model_weak_direction"])
+                 if abs(c) >= 0.05]
+        far = "without limit" if not np.isfinite(res["model_spread"]) else \
+            f"{100 * res['model_spread']:.3g}% of the bounds' ranges"
+        lines.append(f"WARNING: but not against the model's own error: a load error of {100 * res['model_error']:.2g}% "
+                     f"of P_max (a mesh or load-step error of that size; --model-error) moves the combination "
+                     f"({' '.join(parts)}) {far}, so these values owe as much to the model as to the material.")
+        lines += _resolve(res, params)
         return lines
     parts = [f"{'+' if c >= 0 else '-'}{abs(c):.2f} {p.name}" for p, c in zip(params, res["weak_direction"])
              if abs(c) >= 0.05]
@@ -70,6 +97,12 @@ def verdict_lines(res, params):
                  f"({' '.join(parts)}) of scaled parameters they may move {far} "
                  "and stay within the noise: different materials give these same curves "
                  "(the 'mystical materials' of Chen et al., J. Mech. Phys. Solids 55 (2007) 1618).")
+    return lines + _resolve(res, params)
+
+
+def _resolve(res, params):
+    """The correlated pairs, and what would tell them apart."""
+    lines = []
     pairs = [(params[i].name, params[j].name, res["corr"][i, j]) for i in range(len(params))
              for j in range(i + 1, len(params)) if abs(res["corr"][i, j]) >= 0.9]
     if pairs:
