@@ -85,8 +85,10 @@ def verdict_lines(res, params):
         far = "without limit" if not np.isfinite(res["model_spread"]) else \
             f"{100 * res['model_spread']:.3g}% of the bounds' ranges"
         lines.append(f"WARNING: but not against the model's own error: a load error of {100 * res['model_error']:.2g}% "
-                     f"of P_max (a mesh or load-step error of that size; --model-error) moves the combination "
-                     f"({' '.join(parts)}) {far}, so these values owe as much to the model as to the material.")
+                     f"of P_max (a mesh or load-step error of that size; --model-error) would move the combination "
+                     f"({' '.join(parts)}) {far}, more than the limit of {100 * res['spread_limit']:.2g}%. Trust "
+                     f"these values only as far as the model's mesh and load steps are converged "
+                     f"(doc/load-steps.md), or make the curves tell them apart better.")
         lines += _resolve(res, params)
         return lines
     parts = [f"{'+' if c >= 0 else '-'}{abs(c):.2f} {p.name}" for p, c in zip(params, res["weak_direction"])
