@@ -101,6 +101,11 @@ CASES = {
     "mu0_h15": (paper(15, "-contact_friction", "0"), 2, True, "paper case, frictionless"),
     "mu05_h15": (paper(15, "-contact_friction", "0.5"), 2, True, "paper case, friction 0.5"),
     "mu1_h15": (paper(15, "-contact_friction", "1"), 2, False, "paper case, friction 1.0"),
+    # the axisymmetric model (doc/axisymmetric.md): 2D sections, a direct solve of the free rows
+    "axi_sphere_h10": (["-options_file", "inputs/fit-sphere.opts"], 2, True,
+                       "section: the fit's sphere model (h_tip 10, within 0.26% of h_tip 2.5)"),
+    "axi_cone_h5": (["-options_file", "inputs/cone_axisymmetric.opts"], 2, False,
+                    "section: the paper's film under the 70.3 deg cone, 5 nm cells, steps that follow them"),
 }
 
 # The split of the run from -log_view's nested (flame graph) output of rank 0: a column's time is
