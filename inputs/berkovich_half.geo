@@ -3,8 +3,11 @@
 // scratch test near the whole track, the segment from the origin to (track, 0, 0) (track = 0: a point).
 // Parameters (nm): -setnumber film 300 -setnumber width 1500 -setnumber depth 1500
 //                  -setnumber h_tip 10 -setnumber h_far 250 -setnumber r_fine 150 -setnumber track 0
+// With -setnumber grow g > 0 the cells grow linearly past r_fine instead, h_tip + g (distance - r_fine) up to
+// h_far (as in axisymmetric_film.geo): a fixed fraction of the distance to the tip.
 SetFactory("OpenCASCADE");
-DefineConstant[ film = 300, width = 1500, depth = 1500, h_tip = 10, h_far = 250, r_fine = 150, track = 0 ];
+DefineConstant[ film = 300, width = 1500, depth = 1500, h_tip = 10, h_far = 250, r_fine = 150, track = 0,
+                grow = 0 ];
 Box(1) = {-width, 0, -film, 2 * width, width, film};            // film
 Box(2) = {-width, 0, -depth, 2 * width, width, depth - film};   // substrate
 BooleanFragments{ Volume{1}; Delete; }{ Volume{2}; Delete; }
@@ -22,12 +25,17 @@ For i In {1:n_track}
 EndFor
 Field[1] = Distance;
 Field[1].PointsList = {100:100 + n_track};
-Field[2] = Threshold;
-Field[2].InField = 1;
-Field[2].SizeMin = h_tip;
-Field[2].SizeMax = h_far;
-Field[2].DistMin = r_fine;
-Field[2].DistMax = 8 * r_fine;
+If (grow > 0)
+  Field[2] = MathEval;
+  Field[2].F = Sprintf("Min(%g, %g + %g * Max(0, F1 - %g))", h_far, h_tip, grow, r_fine);
+Else
+  Field[2] = Threshold;
+  Field[2].InField = 1;
+  Field[2].SizeMin = h_tip;
+  Field[2].SizeMax = h_far;
+  Field[2].DistMin = r_fine;
+  Field[2].DistMax = 8 * r_fine;
+EndIf
 Background Field = 2;
 Mesh.CharacteristicLengthExtendFromBoundary = 0;
 Mesh.CharacteristicLengthFromPoints = 0;
