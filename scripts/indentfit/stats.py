@@ -51,8 +51,8 @@ def analyse(J, r, params, u, noise_sigma=None, spread_limit=0.05, model_error=0.
     weak = Vt[-1] * np.sign(Vt[-1][np.argmax(np.abs(Vt[-1]))])
     spread = float(t * inv[-1])
     at_bound = [pp.name for pp, uu in zip(params, u) if uu <= 1e-6 or uu >= 1 - 1e-6]
-    smin = np.linalg.svd(J, compute_uv=False)[-1]
-    Vm = np.linalg.svd(J)[2][-1]
+    _, svm, Vtm = np.linalg.svd(J, full_matrices=False)
+    smin, Vm = svm[-1], Vtm[-1]
     model_weak = Vm * np.sign(Vm[np.argmax(np.abs(Vm))])
     model_spread = float(model_error * np.sqrt(w2) / smin) if smin > 0 else float("inf")
     return {

@@ -8,7 +8,7 @@ typedef struct {
   Mat         Aff;
   KSP         inner;
   VecScatter  scatter;
-  Vec         bf, xf;
+  Vec         bf, xf, diag; /* the free block's right-hand side and solution; the whole matrix's diagonal */
 } HeldLU;
 
 static const char *const HeldLUName = "held rows apart, the free block factored";
@@ -48,6 +48,7 @@ static PetscErrorCode UpdateFreeRows(HeldLU *h, Mat P)
   PetscCall(VecScatterDestroy(&h->scatter));
   PetscCall(VecDestroy(&h->bf));
   PetscCall(VecDestroy(&h->xf));
+  PetscCall(VecDestroy(&h->diag));
   PetscCall(MatGetOwnershipRange(P, &rstart, &rend));
   PetscCall(PetscMalloc1(rend - rstart - n, &freerows));
   for (PetscInt r = rstart, k = 0; r < rend; ++r) {
@@ -56,14 +57,10 @@ static PetscErrorCode UpdateFreeRows(HeldLU *h, Mat P)
     freerows[nfree++] = r;
   }
   PetscCall(ISCreateGeneral(PetscObjectComm((PetscObject)P), nfree, freerows, PETSC_OWN_POINTER, &h->free));
-  {
-    Vec x;
-    PetscCall(MatCreateVecs(P, &x, NULL));
-    PetscCall(VecCreateMPI(PetscObjectComm((PetscObject)P), nfree, PETSC_DETERMINE, &h->bf));
-    PetscCall(VecDuplicate(h->bf, &h->xf));
-    PetscCall(VecScatterCreate(x, h->free, h->bf, NULL, &h->scatter));
-    PetscCall(VecDestroy(&x));
-  }
+  PetscCall(MatCreateVecs(P, &h->diag, NULL));
+  PetscCall(VecCreateMPI(PetscObjectComm((PetscObject)P), nfree, PETSC_DETERMINE, &h->bf));
+  PetscCall(VecDuplicate(h->bf, &h->xf));
+  PetscCall(VecScatterCreate(h->diag, h->free, h->bf, NULL, &h->scatter));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -71,7 +68,6 @@ static PetscErrorCode SetUp(PC pc)
 {
   HeldLU            *h;
   Mat                P;
-  Vec                d;
   const PetscScalar *dv;
   PetscInt           rstart;
 
@@ -82,13 +78,11 @@ static PetscErrorCode SetUp(PC pc)
   PetscCall(MatCreateSubMatrix(P, h->free, h->free, h->Aff ? MAT_REUSE_MATRIX : MAT_INITIAL_MATRIX, &h->Aff));
   PetscCall(KSPSetOperators(h->inner, h->Aff, h->Aff));
   PetscCall(KSPSetUp(h->inner));
-  PetscCall(MatCreateVecs(P, &d, NULL));
-  PetscCall(MatGetDiagonal(P, d));
+  PetscCall(MatGetDiagonal(P, h->diag));
   PetscCall(MatGetOwnershipRange(P, &rstart, NULL));
-  PetscCall(VecGetArrayRead(d, &dv));
+  PetscCall(VecGetArrayRead(h->diag, &dv));
   for (PetscInt k = 0; k < h->nheld; ++k) h->dinv[k] = 1.0 / dv[h->held[k] - rstart];
-  PetscCall(VecRestoreArrayRead(d, &dv));
-  PetscCall(VecDestroy(&d));
+  PetscCall(VecRestoreArrayRead(h->diag, &dv));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -148,6 +142,7 @@ static PetscErrorCode Destroy(PC pc)
   PetscCall(VecScatterDestroy(&h->scatter));
   PetscCall(VecDestroy(&h->bf));
   PetscCall(VecDestroy(&h->xf));
+  PetscCall(VecDestroy(&h->diag));
   PetscCall(PetscFree(h));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
