@@ -56,7 +56,6 @@ def indent_options(args):
         "-bc_fixed", "bottom",
         "-indenter_type", "cone", "-indenter_radius", "0", "-contact_friction", f"{args.friction:g}",
         *(["-load_unload_steps", str(args.unload_steps)] if args.unload_steps else ["-load_unload", "0"]),
-        "-ksp_type", "preonly", "-pc_type", "lu", "-pc_factor_mat_solver_type", "mumps",
         "-output_fields", "0", "-quiet", *args.options.split(),
     ]
 
