@@ -32,7 +32,8 @@ import sys
 
 import numpy as np
 
-from runfiles import InputError, mirror, open_fields, read_curve, top_surface  # this script's folder
+from heightmap import grid_axis, write_gsf  # this script's folder
+from runfiles import InputError, mirror, open_fields, read_curve, top_surface
 
 CSV_NAME, SUMMARY_NAME, H5_NAME = "load_displacement.csv", "summary.json", "indent.h5"
 # Steps end exactly on the load program's segment ends (src/solvers/loadpath.c); the CSV prints t with 10
@@ -152,25 +153,6 @@ def interpolate(xy, height, tris, gx, gy):
         block = grid[i0:i1 + 1, j0:j1 + 1]
         block[inside] = (la * height[a] + lb * height[b] + lc * height[c])[inside]
     return grid
-
-
-def grid_axis(half, pixels):
-    """Pixel centres of a grid of the given half-width, as Gwyddion places them (XOffset + (j + 1/2) dx)."""
-    step = 2 * half / pixels
-    return -half + (np.arange(pixels) + 0.5) * step
-
-
-def write_gsf(path, grid, half, title):
-    """Gwyddion Simple Field 1.0: the magic line, 'name = value' lines, 1 to 4 NUL bytes to a multiple
-    of 4, then XRes x YRes little-endian float32, row by row (row i at y = YOffset + (i + 1/2) dy)."""
-    m = 1e-9  # nm to m: Gwyddion keeps base SI units
-    header = (f"Gwyddion Simple Field 1.0\nXRes = {grid.shape[1]}\nYRes = {grid.shape[0]}\n"
-              f"XReal = {2 * half * m:.10g}\nYReal = {2 * half * m:.10g}\nXOffset = {-half * m:.10g}\n"
-              f"YOffset = {-half * m:.10g}\nTitle = {title}\nXYUnits = m\nZUnits = m\n").encode("ascii")
-    with open(path, "wb") as f:
-        f.write(header + b"\0" * (4 - len(header) % 4))
-        f.write((grid * m).astype("<f4").tobytes(order="C"))
-    print(f"wrote {path}")
 
 
 # -------------------------------------------------------------------------------------------- main

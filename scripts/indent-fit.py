@@ -11,7 +11,10 @@ options). --curve FILE: a measured curve (CSV, Hysitron .txt, Agilent .xls/.xlsx
 reads them; --test, --format, --compliance and --drift given before it apply to it). Each curve is simulated to
 its own largest depth (-load_depth) with the model given before it; options after -- go to every run.
 --param NAME=OPTION[,OPTION...]:LOW:HIGH[:log]: a parameter, the options it sets (several for one material in
-two regions) and its bounds (':log': scaled by its logarithm).
+two regions) and its bounds (':log': scaled by its logarithm). --imprint MAP: the residual imprint of the last
+--curve (an AFM height map, Gwyddion .gsf or x y z lines), a second term of the misfit: the model's top surface
+after unloading against the map, leveled on a ring around the indenter's axis (--imprint-center, -rotation,
+-radius, -weight, -unit, -points, -noise given before it apply to it).
 
 The fit: SciPy's trust-region reflective least squares on the loads at the measured depths (loading and
 unloading, weights --weights L,U), its Jacobian by forward differences whose runs go concurrently (--jobs K
@@ -23,7 +26,7 @@ nothing finished is run again.
 
 Output in OUT: report.txt (the parameters with 95% confidence intervals, their correlations, the verdict on
 what the curves can tell apart, the forward runs and their time), result.json, history.csv, curve-K.csv
-(measured and fitted loads), fit.png and misfit.png.
+(measured and fitted loads), imprint-K.csv (measured and fitted heights), fit.png, imprint-K.png and misfit.png.
 Exit status: 0 fitted; 1 bad input (one line); 3 the forward runs failed at the start; 75 stopped.
 """
 import argparse
@@ -40,7 +43,8 @@ import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import indentcurves  # noqa: E402
-from indentfit import dao, misfit, params as fparams, runs, stats  # noqa: E402
+import runfiles  # noqa: E402
+from indentfit import dao, imprint, misfit, params as fparams, runs, stats  # noqa: E402
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 EX_STOPPED = 75
@@ -53,6 +57,7 @@ class FitError(Exception):
 class Curve:
     def __init__(self, path, model, read_opts):
         self.path, self.model, self.read_opts = path, model, dict(read_opts)
+        self.imprint_opts, self.imprint = None, None
 
 
 class CurveAction(argparse.Action):
@@ -63,6 +68,20 @@ class CurveAction(argparse.Action):
             parser.error(f"--curve {value}: give --model OPTIONS_FILE before it")
         ns.curves.append(Curve(value, ns.model, {"fmt": ns.format, "test": ns.test, "compliance": ns.compliance,
                                                  "drift": ns.drift}))
+
+
+class ImprintAction(argparse.Action):
+    """--imprint attaches a height map, with the --imprint-* options given before it, to the last --curve."""
+
+    def __call__(self, parser, ns, value, option_string=None):
+        if not ns.curves:
+            parser.error(f"--imprint {value}: give the --curve whose indenter made it before it")
+        if ns.curves[-1].imprint_opts is not None:
+            parser.error(f"--imprint {value}: curve {ns.curves[-1].path} has an imprint already")
+        ns.curves[-1].imprint_opts = {"path": value, "unit": ns.imprint_unit, "center": ns.imprint_center,
+                                      "rotation": ns.imprint_rotation, "radius": ns.imprint_radius,
+                                      "points": ns.imprint_points, "weight": ns.imprint_weight,
+                                      "noise": ns.imprint_noise}
 
 
 def parse_args(argv):
@@ -78,6 +97,24 @@ def parse_args(argv):
     ap.add_argument("--compliance", type=float, default=0.0, help="frame compliance (nm/uN) of the curves after it")
     ap.add_argument("--drift", type=float, default=0.0, help="thermal drift (nm/s) of the curves after it")
     ap.add_argument("--curve", action=CurveAction, dest="curves", default=[], help="a measured curve")
+    ap.add_argument("--imprint-unit", default="nm",
+                    help="length unit of the x y z maps after it (a .gsf names its own)")
+    ap.add_argument("--imprint-center", default="deepest",
+                    help="the indenter's axis on the maps after it: X,Y in the map's frame (nm), or 'deepest' "
+                         "(the centroid of the pixels within 10%% of the deepest; default)")
+    ap.add_argument("--imprint-rotation", type=float, default=0.0,
+                    help="the direction on the maps after it (degrees from their x axis) of the model's x axis")
+    ap.add_argument("--imprint-radius", type=float,
+                    help="radius (nm) of the disc fitted on the maps after it (default: 0.8 of the largest disc "
+                         "around the centre inside the map; the ring between them levels the map)")
+    ap.add_argument("--imprint-points", type=int, default=2000, help="most pixels fitted per map (default 2000)")
+    ap.add_argument("--imprint-weight", type=float, default=1.0,
+                    help="weight of the maps after it against a curve's loading or unloading (default 1)")
+    ap.add_argument("--imprint-noise", type=float,
+                    help="height noise (nm) of the maps after it, needed with --noise in uN")
+    ap.add_argument("--imprint", action=ImprintAction,
+                    help="a measured residual imprint (AFM height map: .gsf, or x y z lines) of the last --curve: "
+                         "a second term of the misfit (doc/inverse.md)")
     ap.add_argument("--param", action="append", default=[], help="NAME=OPTION[,OPTION...]:LOW:HIGH[:log]")
     ap.add_argument("--weights", default="1,1", help="weights of the loading and the unloading (default 1,1)")
     ap.add_argument("--points", type=int, default=40, help="measured points per branch fitted (default 40)")
@@ -134,6 +171,14 @@ def load_curves(args):
             c.model_text = f.read()
         c.model_abs = os.path.abspath(c.model)
         c.branches, c.index = b, k
+        if c.imprint_opts is not None:
+            o = c.imprint_opts
+            try:
+                c.imprint = imprint.load(o["path"], o["unit"], o["center"], o["rotation"], o["radius"], o["points"],
+                                         o["weight"])
+            except imprint.ImprintError as e:
+                raise FitError(str(e)) from None
+            c.imprint.noise = o["noise"]
         out.append(c)
     return out
 
@@ -145,7 +190,7 @@ class Fit:
         if len(w) != 2 or min(w) < 0 or max(w) == 0:
             raise FitError(f"--weights {args.weights}: give two non-negative numbers, not both zero")
         self.w = w
-        self.w2 = len(curves) * (w[0] ** 2 + w[1] ** 2)
+        self.w2 = len(curves) * (w[0] ** 2 + w[1] ** 2) + sum(c.imprint.weight ** 2 for c in curves if c.imprint)
         jobs = args.jobs or max(1, (os.cpu_count() or 1) // args.np)
         self.runner = runs.Runner(os.path.join(args.out, "runs"), args.indent, args.launcher, args.np, jobs,
                                   log=self.say)
@@ -161,7 +206,9 @@ class Fit:
         opts = []
         for p, uu in zip(self.params, u):
             opts += p.indent_options(p.value(uu))
-        return opts + ["-load_depth", f"{curve.branches.h_max:.10g}"] + self.args.extra
+        # a run whose imprint is fitted writes the fields of its segments' ends and of its last step only
+        fields = ["-output_fields", "1", "-output_fields_every", "1000000"] if curve.imprint else []
+        return opts + ["-load_depth", f"{curve.branches.h_max:.10g}"] + fields + self.args.extra
 
     def submit(self, u):
         return [self.runner.submit(c.model_abs, c.model_text, self.options(c, u)) for c in self.curves]
@@ -189,11 +236,37 @@ class Fit:
                 sim = misfit.read_indent_curve(path)
             sims.append(sim)
             parts.append(misfit.residuals(c.branches, sim, *self.w))
+            if c.imprint:
+                try:
+                    parts.append(c.imprint.residuals(self.surface(rec)))
+                except imprint.ImprintError as e:
+                    raise FitError(f"--imprint {c.imprint.path}: {e}") from None
         r = np.concatenate(parts)
         self.evals[key] = (r, recs, sims)
         if kind != "fd":
             self.record(u, r, kind)
         return r
+
+    def groups(self):
+        """Index arrays of each curve's residuals and each imprint's: each has a noise of its own."""
+        out, k = [], 0
+        for c in self.curves:
+            sizes = [sum(len(h) for _, h, _, _ in misfit.fitted_branches(c.branches, *self.w))]
+            sizes += [len(c.imprint.z)] if c.imprint else []
+            for n in sizes:
+                out.append(np.arange(k, k + n))
+                k += n
+        return out
+
+    def surface(self, rec):
+        """The top surface of a run whose imprint is fitted (None for a failed run)."""
+        if rec["returncode"] != 0:
+            return None
+        try:
+            return imprint.run_surface(rec["dir"])
+        except (OSError, ValueError, RuntimeError, runfiles.InputError) as e:
+            # RuntimeError: matplotlib's search of a top surface whose deformed triangles overlap
+            raise FitError(f"the top surface of {rec['dir']} cannot be read: {e}") from None
 
     def record(self, u, r, kind):
         m = misfit.rms(r, self.w2)
@@ -311,8 +384,15 @@ def noise_sigma(args, fit):
         raise FitError(f"--noise {args.noise}: 'residual' or a load in uN") from None
     if s <= 0:
         raise FitError(f"--noise {args.noise}: must be positive")
-    return np.concatenate([np.full(len(h), s * scale) for c in fit.curves
-                           for _, h, _, scale in misfit.fitted_branches(c.branches, *fit.w)])
+    parts = []
+    for c in fit.curves:
+        parts += [np.full(len(h), s * scale) for _, h, _, scale in misfit.fitted_branches(c.branches, *fit.w)]
+        if c.imprint:
+            if not (c.imprint.noise or 0) > 0:
+                raise FitError(f"--noise {args.noise} uN: give the height noise of {c.imprint.path} as well "
+                               "(--imprint-noise NM before --imprint)")
+            parts.append(np.full(len(c.imprint.z), c.imprint.noise * c.imprint.scale))
+    return np.concatenate(parts)
 
 
 def write_outputs(args, fit, sol, res):
@@ -335,11 +415,35 @@ def write_outputs(args, fit, sol, res):
         "wall_seconds": time.time() - fit.t0,
         "curves": [{"file": c.path, "model": c.model, "h_max": c.branches.h_max, "p_max": c.branches.p_max,
                     "run": rec["dir"]} for c, rec in zip(fit.curves, recs)],
+        "imprints": [],
     }
+    imprint_lines = []
+    for c, rec in zip(fit.curves, recs):
+        if not c.imprint:
+            continue
+        m = c.imprint
+        surface = fit.surface(rec)
+        diff = m.model_heights(surface) - m.z
+        path = os.path.join(out, f"imprint-{c.index + 1}.csv")
+        m.write_fitted(path, surface)
+        rms_nm = float(np.sqrt(np.mean(diff ** 2)))
+        result["imprints"].append({"file": m.path, "curve": c.index + 1, "center_nm": m.center_found().tolist(),
+                                   "registered": m.register,
+                                   "rotation_deg": m.rotation, "radius_nm": m.radius, "ring_nm": list(m.ring),
+                                   "pixels": len(m.z), "depth_nm": m.depth, "weight": m.weight, "rms_nm": rms_nm,
+                                   "fitted": path})
+        axis = m.center_found()
+        imprint_lines.append(f"imprint of curve {c.index + 1}: {m.path}: {len(m.z)} pixels within {m.radius:.4g} nm of "
+                             f"({m.center[0]:.4g}, {m.center[1]:.4g}) nm, leveled on the ring to {m.ring[1]:.4g} nm; "
+                             f"the model's axis {'registered' if m.register else 'given'} at ({axis[0]:.4g}, "
+                             f"{axis[1]:.4g}) nm; "
+                             f"measured depth {m.depth:.4g} nm, RMS height difference {rms_nm:.3g} nm "
+                             f"({100 * rms_nm / m.depth:.3g}% of it); measured and fitted in {path}")
     with open(os.path.join(out, "result.json"), "w") as f:
         json.dump(result, f, indent=1)
-    lines = [f"indent-fit: {len(fit.curves)} curve(s), {len(fit.params)} parameter(s); {sol.message}",
-             f"misfit (weighted RMS load error / P_max): {100 * result['misfit_rms']:.4g}%", "",
+    what = "load error / P_max" + (" and height error / imprint depth" if result["imprints"] else "")
+    lines = [f"indent-fit: {len(fit.curves)} curve(s), {len(result['imprints'])} imprint(s), {len(fit.params)} "
+             f"parameter(s); {sol.message}", f"misfit (weighted RMS {what}): {100 * result['misfit_rms']:.4g}%", "",
              f"{'parameter':12s} {'value':>12s} {'95% interval':>14s}   bounds"]
     for p, v, ci in zip(fit.params, res["values"], res["ci95"]):
         lines.append(f"{p.name:12s} {v:12.6g} {'+/- ' + format(ci, '.3g'):>14s}   [{p.low:g}, {p.high:g}]"
@@ -357,6 +461,7 @@ def write_outputs(args, fit, sol, res):
         if sim is not None:
             misfit.write_fitted(path, c.branches, sim)
             lines.append(f"curve {c.index + 1}: {c.path} (model {c.model}): measured and fitted in {path}")
+    lines += imprint_lines
     text = "\n".join(lines) + "\n"
     with open(os.path.join(out, "report.txt"), "w") as f:
         f.write(text)
@@ -366,10 +471,10 @@ def write_outputs(args, fit, sol, res):
         w.writerows(fit.history)
     print(text, end="")
     if not args.no_plots:
-        plots(args, fit, sims)
+        plots(args, fit, sims, recs)
 
 
-def plots(args, fit, sims):
+def plots(args, fit, sims, recs):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -392,6 +497,20 @@ def plots(args, fit, sims):
     fig.tight_layout()
     fig.savefig(os.path.join(args.out, "fit.png"), dpi=120)
     plt.close(fig)
+    for c, rec in zip(fit.curves, recs):
+        if not c.imprint:
+            continue
+        m = c.imprint
+        fig, ax = plt.subplots(figsize=(6.4, 4.0))
+        r = np.hypot(m.x, m.y)
+        ax.plot(r, m.z, ".", ms=2, color="C0", label=f"measured: {os.path.basename(m.path)}")
+        ax.plot(r, m.model_heights(fit.surface(rec)), ".", ms=2, color="C1", label="fitted")
+        ax.set_xlabel("distance from the axis (nm)")
+        ax.set_ylabel("height (nm)")
+        ax.legend(fontsize="small", markerscale=4)
+        fig.tight_layout()
+        fig.savefig(os.path.join(args.out, f"imprint-{c.index + 1}.png"), dpi=120)
+        plt.close(fig)
     fig, ax = plt.subplots(figsize=(6.4, 3.6))
     h = fit.history
     ax.semilogy([e[0] for e in h], [100 * e[2] for e in h], "o-", ms=3)
@@ -436,7 +555,7 @@ def main(argv):
                             ftol=args.tol, xtol=args.tol, gtol=1e-10, max_nfev=args.max_evals)
         J = fit.jac(sol.x)
         res = stats.analyse(J, fit.residual(sol.x), prm, sol.x, sigma, args.spread_limit, args.model_error,
-                            fit.w2)
+                            fit.w2, fit.groups())
     except FitError as e:
         fit.runner.shutdown()
         print(f"indent-fit: error: {e}", file=sys.stderr)

@@ -68,18 +68,24 @@ def dataset(h5, name, path):
     return h5[name]
 
 
-def top_surface(h5, path):
-    """Top-surface vertices of the last step: deformed (x, y), height of the deformed surface above
-    the undeformed one, the triangles of the top faces in local numbers, the mirror axes and the
-    tolerance of a plane."""
+def _last_top(h5, path):
+    """Vertices, cells, the last step's displacement, the top plane's level and the tolerance of a plane."""
     x = dataset(h5, "geometry/vertices", path)[:]
     cells = dataset(h5, "topology/cells", path)[:].astype(np.int64)
     disp = dataset(h5, "fields/displacement", path)
     if x.ndim != 2 or x.shape[1] != 3 or cells.ndim != 2 or cells.shape[1] not in (3, 4, 8) or disp.shape[0] == 0:
-        raise InputError(f"{path}: expected vertices (N, 3), cells (C, 4 or 8) and a displacement step")
+        raise InputError(f"{path}: expected vertices (N, 3), cells (C, 3, 4 or 8) and a displacement step")
     u = disp[disp.shape[0] - 1]
     lo, hi = x.min(axis=0), x.max(axis=0)
     tol = REL_TOL * float(np.max(hi - lo))
+    return x, cells, u, lo, hi, tol
+
+
+def top_surface(h5, path):
+    """Top-surface vertices of the last step: deformed (x, y), height of the deformed surface above
+    the undeformed one, the triangles of the top faces in local numbers, the mirror axes and the
+    tolerance of a plane."""
+    x, cells, u, lo, hi, tol = _last_top(h5, path)
     if is_section(x, cells, tol):
         raise InputError(f"{path}: an axisymmetric section, whose top surface is a profile, not a map: its imprint "
                          "is imprint.csv of scripts/plot-indent.py")
@@ -93,6 +99,18 @@ def top_surface(h5, path):
     # A symmetry plane x = 0 or y = 0 bounds the model with the body on its positive side.
     axes = [a for a in (0, 1) if abs(lo[a]) <= tol and hi[a] > tol]
     return xy, height, local[tris], axes, tol
+
+
+def top_profile(h5, path):
+    """The top surface of an axisymmetric section at the last step: deformed radius and height above the
+    undeformed surface of its vertices, by radius; None for a 3D model."""
+    x, cells, u, lo, hi, tol = _last_top(h5, path)
+    if not is_section(x, cells, tol):
+        return None
+    verts = np.flatnonzero(np.abs(x[:, 2] - hi[2]) <= tol)
+    r, height = x[verts, 0] + u[verts, 0], x[verts, 2] + u[verts, 2] - hi[2]
+    order = np.argsort(r)
+    return r[order], height[order]
 
 
 def read_scratch(path, need):

@@ -2,12 +2,14 @@
 """Unit tests of scripts/indentfit (the inverse fit's decisions) on small closed-form cases."""
 import os
 import sys
+import tempfile
 import unittest
 
 import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "scripts"))
-from indentfit import dao, misfit, params, runs, stats  # noqa: E402
+import heightmap  # noqa: E402
+from indentfit import dao, imprint, misfit, params, runs, stats  # noqa: E402
 
 
 class Params(unittest.TestCase):
@@ -88,6 +90,31 @@ class Stats(unittest.TestCase):
         np.testing.assert_allclose(res["values"], beta, rtol=1e-12)
         self.assertTrue(res["distinguishable"])
 
+    def test_groups_of_other_noise(self):
+        # a straight line measured twice: 20 points on [0, 1] with noise 1 and 2000 on [0, 0.01] with noise 0.01 (a
+        # curve, and an imprint that tells the intercept only, in residual units). The spread of the least-squares
+        # estimates over 400 draws is what the intervals must give (measured: within 7%); one pooled scatter
+        # (groups=None) puts the slope's 10 times too small.
+        rng = np.random.default_rng(5)
+        x = np.r_[np.linspace(0, 1, 20), np.linspace(0, 0.01, 2000)]
+        sig = np.r_[np.full(20, 1.0), np.full(2000, 0.01)]
+        X = np.column_stack([np.ones_like(x), x])
+        groups = [np.arange(20), np.arange(20, 2020)]
+        pa, pb = params.parse("a=oa:-10:10"), params.parse("b=ob:-10:10")
+        est, sd_grouped, sd_pooled = [], [], []
+        for k in range(400):
+            y = 1 + 2 * x + sig * rng.standard_normal(len(x))
+            beta = np.linalg.lstsq(X, y, rcond=None)[0]
+            est.append(beta)
+            if k < 20:
+                u = [pa.scaled(beta[0]), pb.scaled(beta[1])]
+                J = X * np.array([pa.dvalue_du(u[0]), pb.dvalue_du(u[1])])
+                sd_grouped.append(stats.analyse(J, X @ beta - y, [pa, pb], u, groups=groups)["sd"])
+                sd_pooled.append(stats.analyse(J, X @ beta - y, [pa, pb], u)["sd"])
+        spread = np.std(est, axis=0)
+        np.testing.assert_allclose(np.median(sd_grouped, axis=0), spread, rtol=0.15)
+        self.assertLess(np.median(sd_pooled, axis=0)[1], 0.2 * spread[1])  # the slope, which the 20 points tell
+
     def test_indistinguishable(self):
         # two parameters that enter only as their sum: the verdict must say so and name both
         rng = np.random.default_rng(4)
@@ -161,6 +188,172 @@ class Cache(unittest.TestCase):
         self.assertNotEqual(k, runs.run_key("-a 2\n", ["-x", "1"]))
         self.assertNotEqual(k, runs.run_key("-a 1\n", ["-x", "1.0"]))
         self.assertNotEqual(runs.run_key("", ["-x", "1", "-y"]), runs.run_key("", ["-x", "1 -y"]))
+
+
+def bowl(x, y, depth=20.0, radius=100.0):
+    """A residual imprint: a parabolic pit of the given depth and radius, a rim of 2 nm at 1.3 radii."""
+    r = np.hypot(x, y)
+    return np.where(r < radius, -depth * (1 - (r / radius) ** 2), 0.0) + 2.0 * np.exp(-((r - 1.3 * radius) / 20) ** 2)
+
+
+class HeightMaps(unittest.TestCase):
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory()
+        self.dir = self.tmp.name
+
+    def tearDown(self):
+        self.tmp.cleanup()
+
+    def test_gsf_round_trip(self):
+        # the grid export-curves.py writes, read back at Gwyddion's pixel centres, in nm
+        half, n = 300.0, 65
+        g = heightmap.grid_axis(half, n)
+        X, Y = np.meshgrid(g, g)
+        Z = bowl(X - 10, Y + 5) + 0.01 * X
+        path = os.path.join(self.dir, "m.gsf")
+        heightmap.write_gsf(path, Z, half, "test")
+        m = heightmap.read_gsf(path)
+        self.assertEqual(len(m.z), n * n)
+        np.testing.assert_allclose(m.x, X.ravel(), rtol=0, atol=1e-9 * half)
+        np.testing.assert_allclose(m.y, Y.ravel(), rtol=0, atol=1e-9 * half)
+        np.testing.assert_allclose(m.z, Z.ravel(), rtol=1e-6, atol=1e-5)  # float32
+
+    def test_gsf_units_and_damage(self):
+        half, n = 1.0, 8
+        path = os.path.join(self.dir, "u.gsf")
+        heightmap.write_gsf(path, np.ones((n, n)), half, "t")
+        with open(path, "rb") as f:
+            data = f.read()
+        head = data[:data.find(b"\0")].replace(b"XYUnits = m\n", b"XYUnits = um\n")
+        with open(path, "wb") as f:
+            f.write(head + b"\0" * (4 - len(head) % 4) + data[-4 * n * n:])
+        m = heightmap.read_gsf(path)
+        self.assertAlmostEqual(m.x.max(), (half - half / n) * 1e-9 * 1e3, places=12)
+        self.assertAlmostEqual(m.z[0], 1.0, places=5)
+        for bad, why in ((data[:-4], "bytes of data"), (b"hello" + data, "not a Gwyddion"),
+                         (data.replace(b"ZUnits = m", b"ZUnits = s"), "not a length"),
+                         (data.replace(b"XRes = 8", b"XRes = x"), "not a number")):
+            with open(path, "wb") as f:
+                f.write(bad)
+            with self.assertRaisesRegex(heightmap.MapError, why):
+                heightmap.read_gsf(path)
+
+    def test_xyz(self):
+        path = os.path.join(self.dir, "m.xyz")
+        g = np.linspace(-1, 1, 5)
+        X, Y = np.meshgrid(g, g)
+        np.savetxt(path, np.column_stack([X.ravel(), Y.ravel(), (X + Y).ravel()]), header="x y z", comments="")
+        m = heightmap.read_map(path, "um")
+        self.assertAlmostEqual(m.z.max(), 2000.0)
+        with open(path, "a") as f:
+            f.write("1 2\n")
+        with self.assertRaisesRegex(heightmap.MapError, "2 numbers, not 3"):
+            heightmap.read_map(path)
+        with self.assertRaisesRegex(heightmap.MapError, "not a length"):
+            heightmap.read_map(path, "furlong")
+
+
+class Imprint(unittest.TestCase):
+    def grid_map(self, center=(0.0, 0.0), tilt=(0.0, 0.0), offset=0.0, angle=0.0, shape=bowl):
+        g = np.linspace(-400, 400, 121)
+        X, Y = np.meshgrid(g, g)
+        t = np.radians(angle)
+        dx, dy = X - center[0], Y - center[1]
+        # the surface seen in the model's frame: the map's point turned by -angle
+        xm, ym = np.cos(t) * dx + np.sin(t) * dy, -np.sin(t) * dx + np.cos(t) * dy
+        Z = shape(xm, ym) + tilt[0] * X + tilt[1] * Y + offset
+        return heightmap.HeightMap(X, Y, Z, "synthetic")
+
+    def test_leveled_centred_and_zero_against_itself(self):
+        # a tilted, offset map of the pit 37 nm and -21 nm off the map's centre: the centre is found, the plane
+        # removed, and the model that made it has zero residuals
+        m = imprint.MeasuredImprint(self.grid_map((37.0, -21.0), (0.02, -0.01), 5.0), points=3000)
+        np.testing.assert_allclose(m.center, (37.0, -21.0), atol=4.0)  # the centroid: to the 6.7 nm pixels
+        r = m.residuals(bowl)  # registered: the model's surface shifted onto the map
+        np.testing.assert_allclose(m.center_found(), (37.0, -21.0), atol=1e-3)
+        self.assertLess(np.abs(r).max(), 1e-5)
+        exact = imprint.MeasuredImprint(self.grid_map((37.0, -21.0), (0.02, -0.01), 5.0), center=(37.0, -21.0))
+        surface = lambda x, y: bowl(x, y) + 3.0  # noqa: E731  (the model's far surface at another level)
+        np.testing.assert_allclose(exact.residuals(surface), 0.0, atol=1e-9)
+        self.assertLessEqual(len(exact.z), 2000)
+        self.assertAlmostEqual(exact.depth, 20.0, delta=0.2)
+        # a model 10% deeper: the residual is the difference over the depth, times 1 / sqrt(pixels)
+        r = exact.residuals(lambda x, y: 1.1 * bowl(x, y))
+        self.assertAlmostEqual(np.sqrt(np.dot(r, r)), np.sqrt(np.mean((0.1 * exact.z) ** 2)) / exact.depth, places=3)
+        # a failed run: a flat surface, the whole imprint missed
+        flat = exact.residuals(None)
+        np.testing.assert_allclose(flat, -exact.z * exact.scale)
+
+    def test_rotation(self):
+        # a three-fold pit (a pyramid's imprint) drawn turned by 40 degrees: with --imprint-rotation 40 the model's
+        # unturned shape matches it, without it does not
+        def tri(x, y):
+            th = np.arctan2(y, x)
+            return bowl(x, y) * (1 + 0.3 * np.cos(3 * th))
+        hm = self.grid_map(angle=40.0, shape=tri)
+        good = imprint.MeasuredImprint(hm, center=(0, 0), rotation_deg=40.0)
+        bad = imprint.MeasuredImprint(hm, center=(0, 0), rotation_deg=0.0)
+        self.assertLess(np.abs(good.residuals(tri)).max(), 1e-9)
+        self.assertGreater(np.abs(bad.residuals(tri)).max(), 1e-3)
+        # off the map's centre, found and registered in the turned frame: the axis comes back in the map's frame
+        moved = imprint.MeasuredImprint(self.grid_map((30.0, 12.0), angle=40.0, shape=tri), rotation_deg=40.0)
+        self.assertLess(np.abs(moved.residuals(tri)).max(), 1e-5)
+        np.testing.assert_allclose(moved.center_found(), (30.0, 12.0), atol=1e-3)
+
+    def test_bad(self):
+        hm = self.grid_map()
+        with self.assertRaisesRegex(imprint.ImprintError, "not inside the map"):
+            imprint.MeasuredImprint(hm, center=(500.0, 0.0))
+        with self.assertRaisesRegex(imprint.ImprintError, "radius"):
+            imprint.MeasuredImprint(hm, center=(0.0, 0.0), radius=390.0)
+        with self.assertRaisesRegex(imprint.ImprintError, "no imprint"):
+            imprint.MeasuredImprint(heightmap.HeightMap(hm.x, hm.y, 0 * hm.z + 1.0), center=(0.0, 0.0))
+        with self.assertRaisesRegex(imprint.ImprintError, "X,Y"):
+            imprint.parse_center("1;2")
+        small = imprint.MeasuredImprint(hm, center=(0.0, 0.0))
+        with self.assertRaisesRegex(imprint.ImprintError, "does not reach"):
+            small.residuals(lambda x, y: np.where(np.hypot(x, y) < 100, bowl(x, y), np.nan))
+
+
+class ImprintOptions(unittest.TestCase):
+    """indent-fit.py's --imprint on bad input: one line naming the option or file, exit 1 (2: argparse's)."""
+
+    def run_fit(self, *argv):
+        import subprocess
+        fit = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "scripts", "indent-fit.py")
+        return subprocess.run([sys.executable, fit, "--out", os.path.join(self.dir, "out"), "--indent", "/bin/true",
+                               "--param", "E=film_young:40:120", *argv], capture_output=True, text=True)
+
+    def setUp(self):
+        import indentcurves
+        self.tmp = tempfile.TemporaryDirectory()
+        self.dir = self.tmp.name
+        h = np.r_[np.linspace(1, 60, 30), np.linspace(60, 50, 20)]
+        self.curve = os.path.join(self.dir, "c.csv")
+        indentcurves.write_csv(self.curve, h, np.r_[0.04 * np.linspace(1, 60, 30) ** 2, np.linspace(144, 1, 20)])
+        self.model = os.path.join(self.dir, "m.opts")
+        with open(self.model, "w") as f:
+            f.write("-indenter_type cone\n")
+
+    def tearDown(self):
+        self.tmp.cleanup()
+
+    def test_bad(self):
+        r = self.run_fit("--imprint", "a.gsf")
+        self.assertEqual(r.returncode, 2)
+        self.assertIn("give the --curve whose indenter made it before it", r.stderr)
+        missing = os.path.join(self.dir, "missing.gsf")
+        r = self.run_fit("--model", self.model, "--curve", self.curve, "--imprint", missing)
+        self.assertEqual(r.returncode, 1)
+        self.assertEqual(r.stderr.strip(), f"indent-fit: error: --imprint {missing}: No such file or directory")
+        bad = os.path.join(self.dir, "bad.xyz")
+        with open(bad, "w") as f:
+            f.write("0 0 0\n1 1\n")
+        r = self.run_fit("--model", self.model, "--curve", self.curve, "--imprint", bad)
+        self.assertEqual((r.returncode, r.stderr.count("\n")), (1, 1))
+        self.assertIn(f"{bad}:2: 2 numbers, not 3", r.stderr)
+        r = self.run_fit("--model", self.model, "--curve", self.curve, "--imprint-center", "3", "--imprint", bad)
+        self.assertIn("--imprint-center 3: 'deepest' or X,Y in nm", r.stderr)
 
 
 if __name__ == "__main__":

@@ -47,9 +47,9 @@ class Runner:
 
     def command(self, model, options, outdir, resume):
         launch = [a.replace("{np}", str(self.np)) for a in shlex.split(self.launcher)]
-        return launch + [self.indent, "-options_file", model] + options + [
-            "-output_dir", outdir, "-output_fields", "0", "-quiet"] + (
-            ["-restart", outdir] if resume else ["-output_overwrite"])
+        # no fields unless the options ask for them (the imprint's runs): those come after, and the last wins
+        return launch + [self.indent, "-options_file", model, "-output_fields", "0"] + options + [
+            "-output_dir", outdir, "-quiet"] + (["-restart", outdir] if resume else ["-output_overwrite"])
 
     def _launch(self, cmd, d):
         with open(os.path.join(d, LOG), "a") as log:

@@ -1,16 +1,20 @@
 """What a fit's optimum can say: the parameters' 95% confidence intervals and correlations from the Jacobian
 at the optimum and the noise, and whether the curves can tell the parameters apart at all.
 
-The residuals are r(u) in scaled coordinates u (params.py). Near the optimum r(u + du) ~ r + J du, so with
-residual noise of standard deviation s the covariance of u is s^2 (J^T J)^-1 (Gauss-Newton), and that of
-the parameters D cov_u D with D = diag(dx/du). s is the measured noise carried into residual units when
-it is given, and otherwise the residuals' own scatter, sqrt(r.r / (m - p)), which also holds what the
-model cannot fit.
+The residuals are r(u) in scaled coordinates u (params.py). Near the optimum r(u + du) ~ r + J du; the fit
+minimises r.r, so with independent residual noise of standard deviation s_i the covariance of u is the
+sandwich A J^T S J A, A = (J^T J)^-1 and S = diag(s_i^2) (Gauss-Newton; s^2 A when every s_i is s), and that
+of the parameters D cov_u D with D = diag(dx/du). s_i is the measured noise carried into residual units when
+it is given, and otherwise the residuals' own scatter, sqrt(r.r / (m - p)), taken group by group: each
+curve's residuals and each imprint's have a scatter of their own (a map's thousands of pixels and a curve's
+dozens of points are scaled so that each term weighs as its weight, not as its count), and the scatter also
+holds what the model cannot fit.
 
 The data cannot tell the parameters apart when some combination of them can move far within the bounds
-and change the curves by less than the noise: the right singular vector of J's smallest singular value
-sigma_min is that combination, and t s / sigma_min is how far (in u, fractions of the bounds' ranges) it
-may move inside the 95% interval. Chen et al. (J. Mech. Phys. Solids 55 (2007) 1618) built such
+and change the curves by less than the noise: the eigenvector of cov_u's largest eigenvalue lambda is that
+combination (with one s, the right singular vector of J's smallest singular value sigma_min, lambda =
+s^2 / sigma_min^2), and t sqrt(lambda) is how far (in u, fractions of the bounds' ranges) it may move inside
+the 95% interval. Chen et al. (J. Mech. Phys. Solids 55 (2007) 1618) built such
 "mystical" materials, whose Berkovich curves coincide.
 
 The noise is not the only error: the model's own (its mesh, its load steps) is a load error of its own,
@@ -23,36 +27,54 @@ import numpy as np
 from scipy import stats as spstats
 
 
-def analyse(J, r, params, u, noise_sigma=None, spread_limit=0.05, model_error=0.0, w2=1.0):
+def scatter(r, groups, p):
+    """The residuals' own noise per residual: each group's sqrt(sum r^2 / (its share of the m - p degrees of
+    freedom))."""
+    m = len(r)
+    sigma = np.empty(m)
+    for g in groups:
+        share = len(g) * max(m - p, 1) / m
+        sigma[g] = np.sqrt(np.dot(r[g], r[g]) / share)
+    return sigma
+
+
+def analyse(J, r, params, u, noise_sigma=None, spread_limit=0.05, model_error=0.0, w2=1.0, groups=None):
     """J: m x p Jacobian in u; r: residuals at the optimum; noise_sigma: residual-unit noise per residual
-    (array of m) or None for the residuals' own scatter; model_error: the model's own load error (RMS fraction
-    of P_max) and w2 the sum of the fitted branches' squared weights. Returns a dict (see the keys at the
-    end)."""
+    (array of m) or None for the residuals' own scatter in each of groups (index arrays; default one group);
+    model_error: the model's own load error (RMS fraction of P_max) and w2 the sum of the fitted branches'
+    squared weights. Returns a dict (see the keys at the end)."""
     m, p = J.shape
     dof = max(m - p, 1)
     if noise_sigma is None:
-        s = float(np.sqrt(np.dot(r, r) / dof))
-        Jw = J / s
-        noise = "the residuals' scatter"
+        groups = [np.arange(m)] if groups is None else groups
+        sigma = scatter(r, groups, p)
+        noise = "the residuals' scatter" + (" (each curve's and each imprint's)" if len(groups) > 1 else "")
     else:
-        Jw = J / np.asarray(noise_sigma)[:, None]
+        sigma = np.asarray(noise_sigma, float)
         noise = "the measured noise"
     t = float(spstats.t.ppf(0.975, dof))
-    U, sv, Vt = np.linalg.svd(Jw, full_matrices=False)
+    U, sv, Vt = np.linalg.svd(J, full_matrices=False)
     tiny = sv.max() * 1e-12 if sv.max() > 0 else 1.0
     inv = np.where(sv > tiny, 1.0 / np.maximum(sv, tiny), np.inf)
-    cov_u = (Vt.T * inv**2) @ Vt
+    with np.errstate(invalid="ignore"):
+        A = (Vt.T * inv**2) @ Vt            # (J^T J)^-1
+        B = (J * sigma[:, None]).T @ (J * sigma[:, None])
+        cov_u = A @ B @ A
+    if not np.all(np.isfinite(cov_u)):
+        lam, weak = np.inf, Vt[-1]
+    else:
+        w, V = np.linalg.eigh(0.5 * (cov_u + cov_u.T))
+        lam, weak = max(float(w[-1]), 0.0), V[:, -1]
     D = np.array([pp.dvalue_du(uu) for pp, uu in zip(params, u)])
     cov = cov_u * np.outer(D, D)
     sd = np.sqrt(np.abs(np.diag(cov)))
     with np.errstate(invalid="ignore", divide="ignore"):
         corr = cov / np.outer(sd, sd)
     x = np.array([pp.value(uu) for pp, uu in zip(params, u)])
-    weak = Vt[-1] * np.sign(Vt[-1][np.argmax(np.abs(Vt[-1]))])
-    spread = float(t * inv[-1])
+    weak = weak * np.sign(weak[np.argmax(np.abs(weak))])
+    spread = float(t * np.sqrt(lam))
     at_bound = [pp.name for pp, uu in zip(params, u) if uu <= 1e-6 or uu >= 1 - 1e-6]
-    _, svm, Vtm = np.linalg.svd(J, full_matrices=False)
-    smin, Vm = svm[-1], Vtm[-1]
+    smin, Vm = sv[-1], Vt[-1]
     model_weak = Vm * np.sign(Vm[np.argmax(np.abs(Vm))])
     model_spread = float(model_error * np.sqrt(w2) / smin) if smin > 0 else float("inf")
     return {
