@@ -315,6 +315,57 @@ class Imprint(unittest.TestCase):
             small.residuals(lambda x, y: np.where(np.hypot(x, y) < 100, bowl(x, y), np.nan))
 
 
+def write_run(path, x, cells, u):
+    """indent.h5 as indent lays it out, with one displacement step: what run_surface reads."""
+    import h5py
+    with h5py.File(path, "w") as h5:
+        h5["geometry/vertices"] = x
+        h5["topology/cells"] = cells
+        h5["fields/displacement"] = u[None]
+
+
+class RunSurface(unittest.TestCase):
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory()
+        self.dir = self.tmp.name
+        self.h5 = os.path.join(self.dir, imprint.H5_NAME)
+
+    def tearDown(self):
+        self.tmp.cleanup()
+
+    def test_section(self):
+        # a section of triangles (x = r, y = 0, z up): its top surface moves out by 10% and down by 10 (1 - r / 100)
+        r, z = np.meshgrid(np.linspace(0, 100, 5), np.linspace(-50, 0, 3))
+        x = np.column_stack([r.ravel(), np.zeros(r.size), z.ravel()])
+        k = np.arange(15).reshape(3, 5)
+        cells = np.concatenate([np.column_stack([k[:-1, :-1].ravel(), k[:-1, 1:].ravel(), k[1:, 1:].ravel()]),
+                                np.column_stack([k[:-1, :-1].ravel(), k[1:, 1:].ravel(), k[1:, :-1].ravel()])])
+        u = np.column_stack([0.1 * x[:, 0], np.zeros(15), np.where(x[:, 2] == 0, -10 * (1 - x[:, 0] / 100), 0)])
+        write_run(self.h5, x, cells, u)
+        surface = imprint.run_surface(self.dir)
+        px, py = np.array([0.0, 30.0, -40.0, 60.0]), np.array([0.0, 40.0, 30.0, -80.0])  # radii 0, 50, 50, 100
+        rho = np.hypot(px, py)
+        np.testing.assert_allclose(surface(px, py), -10 * (1 - rho / 1.1 / 100), atol=1e-12)
+        self.assertTrue(np.isnan(surface(np.array([111.0]), np.array([0.0])))[0])  # past the model's edge
+
+    def test_quarter_model_mirrored(self):
+        # a quarter block of hexahedra (symmetry planes x = 0 and y = 0): a linear height is read back exactly
+        # anywhere in the plane, mirrored
+        g = np.linspace(0, 100, 5)
+        X, Y, Z = np.meshgrid(g, g, [-50.0, 0.0], indexing="ij")
+        x = np.column_stack([X.ravel(), Y.ravel(), Z.ravel()])
+        n = np.arange(x.shape[0]).reshape(5, 5, 2)
+        cells = [[n[i, j, 0], n[i + 1, j, 0], n[i + 1, j + 1, 0], n[i, j + 1, 0],
+                  n[i, j, 1], n[i + 1, j, 1], n[i + 1, j + 1, 1], n[i, j + 1, 1]] for i in range(4) for j in range(4)]
+        u = np.zeros_like(x)
+        u[:, 2] = np.where(x[:, 2] == 0, -5 + 0.02 * x[:, 0] + 0.03 * x[:, 1], 0)
+        write_run(self.h5, x, np.array(cells), u)
+        surface = imprint.run_surface(self.dir)
+        px, py = np.array([-30.0, 20.0, -70.0, 99.0]), np.array([20.0, -45.0, -10.0, 99.0])
+        np.testing.assert_allclose(surface(px, py), -5 + 0.02 * np.abs(px) + 0.03 * np.abs(py), atol=1e-12)
+        self.assertIsNone(imprint.run_surface(os.path.join(self.dir, "none")))  # a run without fields
+
+
 class ImprintOptions(unittest.TestCase):
     """indent-fit.py's --imprint on bad input: one line naming the option or file, exit 1 (2: argparse's)."""
 
