@@ -452,7 +452,7 @@ def write_outputs(args, fit, sol, res):
                   f"{res['dof']} degrees of freedom)", "correlation:"]
     for i, n in enumerate(names):
         lines.append(f"  {n:10s} " + " ".join(f"{res['corr'][i, j]:+7.3f}" for j in range(len(names))))
-    lines += [""] + stats.verdict_lines(res, fit.params) + [""]
+    lines += [""] + stats.verdict_lines(res, fit.params, bool(result["imprints"])) + [""]
     lines.append(f"forward runs: {cnt['run']} run in {cnt['seconds']:.0f} s of run time ({cnt['failed']} failed), "
                  f"{cnt['cached']} taken from {os.path.join(out, 'runs')}; {len(fit.history)} evaluations; "
                  f"wall {result['wall_seconds']:.0f} s")

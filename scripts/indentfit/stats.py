@@ -87,8 +87,8 @@ def analyse(J, r, params, u, noise_sigma=None, spread_limit=0.05, model_error=0.
     }
 
 
-def verdict_lines(res, params):
-    """Plain sentences on what the data can and cannot tell."""
+def verdict_lines(res, params, with_imprint=False):
+    """Plain sentences on what the data can and cannot tell (with_imprint: an imprint is fitted already)."""
     lines = []
     if res["at_bound"]:
         lines.append("at a bound: " + ", ".join(res["at_bound"]) + " (widen the bounds: the interval there means "
@@ -111,7 +111,7 @@ def verdict_lines(res, params):
                      f"({' '.join(parts)}) {far}, more than the limit of {100 * res['spread_limit']:.2g}%. Trust "
                      f"these values only as far as the model's mesh and load steps are converged "
                      f"(doc/load-steps.md), or make the curves tell them apart better.")
-        lines += _resolve(res, params)
+        lines += _resolve(res, params, with_imprint)
         return lines
     parts = [f"{'+' if c >= 0 else '-'}{abs(c):.2f} {p.name}" for p, c in zip(params, res["weak_direction"])
              if abs(c) >= 0.05]
@@ -121,17 +121,18 @@ def verdict_lines(res, params):
                  f"({' '.join(parts)}) of scaled parameters they may move {far} "
                  "and stay within the noise: different materials give these same curves "
                  "(the 'mystical materials' of Chen et al., J. Mech. Phys. Solids 55 (2007) 1618).")
-    return lines + _resolve(res, params)
+    return lines + _resolve(res, params, with_imprint)
 
 
-def _resolve(res, params):
+def _resolve(res, params, with_imprint):
     """The correlated pairs, and what would tell them apart."""
     lines = []
     pairs = [(params[i].name, params[j].name, res["corr"][i, j]) for i in range(len(params))
              for j in range(i + 1, len(params)) if abs(res["corr"][i, j]) >= 0.9]
     if pairs:
         lines.append("  correlated: " + ", ".join(f"{a} and {b} ({c:+.3f})" for a, b, c in pairs))
+    imprint = "" if with_imprint else "the imprint's pile-up (--imprint), "
     lines.append("  What would resolve it: a curve from a second indenter of another shape (a sphere, or a cone "
-                 "of another angle) fitted together with this one, the imprint's pile-up, or a parameter "
+                 f"of another angle) fitted together with this one, {imprint}or a parameter "
                  "fixed from another test (e.g. E from an unloading slope or a tensile test).")
     return lines
