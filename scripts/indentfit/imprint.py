@@ -27,48 +27,55 @@ class ImprintError(Exception):
     pass
 
 
-class MeasuredImprint:
-    """A measured map in the model's frame: points (x, y) of the fitted disc, their heights, the ring's points,
-    the depth scale and the residuals' scale."""
+class Frame:
+    """A map seen from an axis: the points in the model's frame (the map turned by -rotation about the centre,
+    so that the map's direction at +rotation is the model's x), the leveling ring and the heights with the
+    ring's plane taken out."""
 
-    def __init__(self, hmap, center=None, rotation_deg=0.0, radius=None, ring=None, points=2000, weight=1.0,
-                 register=None):
-        if weight <= 0 or points < 16:
-            raise ImprintError(f"{hmap.path}: the imprint's weight must be > 0 and its points >= 16")
+    def __init__(self, hmap, center, rotation_deg, ring):
         x, y, z = hmap.x, hmap.y, hmap.z
-        c = np.asarray(center, float) if center is not None else pit_centroid(x, y, z)
-        self.register = center is None if register is None else register
-        self.shift = np.zeros(2)
-        dx, dy = x - c[0], y - c[1]
-        t = np.radians(rotation_deg)
-        # the model's frame: the map turned by -rotation, so that the map's direction at +rotation is the model's x
-        self.x_all, self.y_all = np.cos(t) * dx + np.sin(t) * dy, -np.sin(t) * dx + np.cos(t) * dy
-        dist = np.hypot(self.x_all, self.y_all)
+        c = self.center = np.asarray(center, float)
         inscribed = min(c[0] - x.min(), x.max() - c[0], c[1] - y.min(), y.max() - c[1])
         if inscribed <= 0:
             raise ImprintError(f"{hmap.path}: the centre ({c[0]:.6g}, {c[1]:.6g}) nm is not inside the map")
+        t = np.radians(rotation_deg)
+        dx, dy = x - c[0], y - c[1]
+        self.x, self.y = np.cos(t) * dx + np.sin(t) * dy, -np.sin(t) * dx + np.cos(t) * dy
+        self.dist = np.hypot(self.x, self.y)
         self.ring = (0.8 * inscribed, inscribed) if ring is None else tuple(ring)
+        self.on_ring = (self.dist >= self.ring[0]) & (self.dist <= self.ring[1])
+        if self.on_ring.sum() < 8:
+            raise ImprintError(f"{hmap.path}: fewer than 8 points on the leveling ring "
+                               f"({self.ring[0]:.6g} to {self.ring[1]:.6g} nm from the centre)")
+        k = self.on_ring
+        self.z = z - plane_fit(self.x[k], self.y[k], z[k])(self.x, self.y)
+
+
+class MeasuredImprint:
+    """A measured map in the model's frame: points (x, y) of the fitted disc, their heights, the ring's points,
+    the depth scale and the residuals' scale. Without a centre the axis is the pit's centroid, found on the raw
+    map and again on the map leveled around it (a tilted map's deepest pixels lie downhill of the axis), then
+    refined by registering the model's surface at every evaluation."""
+
+    def __init__(self, hmap, center=None, rotation_deg=0.0, radius=None, ring=None, points=2000, weight=1.0):
+        if weight <= 0 or points < 16:
+            raise ImprintError(f"{hmap.path}: the imprint's weight must be > 0 and its points >= 16")
+        self.register = center is None
+        if center is None:
+            first = Frame(hmap, pit_centroid(hmap.x, hmap.y, hmap.z), rotation_deg, ring)
+            center = pit_centroid(hmap.x, hmap.y, first.z)
+        f = Frame(hmap, center, rotation_deg, ring)
+        self.center, self.rotation, self.path, self.ring = f.center, rotation_deg, hmap.path, f.ring
+        self.shift = np.zeros(2)
         self.radius = self.ring[0] if radius is None else float(radius)
         if not 0 < self.radius <= self.ring[0] < self.ring[1]:
             raise ImprintError(f"{hmap.path}: need 0 < radius ({self.radius:.6g} nm) <= the ring's inner radius "
                                f"({self.ring[0]:.6g}) < its outer ({self.ring[1]:.6g}), inside the map around the "
                                "centre")
-        on_ring = (dist >= self.ring[0]) & (dist <= self.ring[1])
-        if on_ring.sum() < 8:
-            raise ImprintError(f"{hmap.path}: fewer than 8 points on the leveling ring "
-                               f"({self.ring[0]:.6g} to {self.ring[1]:.6g} nm from the centre)")
-        z = z - plane_fit(self.x_all[on_ring], self.y_all[on_ring], z[on_ring])(self.x_all, self.y_all)
-        if center is None:
-            # the deepest pixels of a tilted map lie downhill of the axis: found again on the leveled map
-            leveled = heightmap.HeightMap(x, y, z, hmap.path)
-            self.__init__(leveled, pit_centroid(x, y, z), rotation_deg, radius, ring, points, weight, True)
-            return
-        self.center, self.rotation, self.path = c, rotation_deg, hmap.path
-        inside = np.flatnonzero(dist <= self.radius)
+        inside = np.flatnonzero(f.dist <= self.radius)
         keep = inside[thin(len(inside), points)]
-        ring_pts = np.flatnonzero(on_ring)
-        self.ring_x, self.ring_y = self.x_all[ring_pts], self.y_all[ring_pts]
-        self.x, self.y, self.z = self.x_all[keep], self.y_all[keep], z[keep]
+        self.ring_x, self.ring_y = f.x[f.on_ring], f.y[f.on_ring]
+        self.x, self.y, self.z = f.x[keep], f.y[keep], f.z[keep]
         self.depth = float(-self.z.min())
         if not self.depth > 1e-6 * self.ring[1]:
             raise ImprintError(f"{hmap.path}: no imprint: the map is nowhere below its leveled far surface")
