@@ -14,9 +14,11 @@ RUN_DIR/indent.h5, and writes into DIR (default RUN_DIR):
                        then Depth (nm), Load (uN), Time (s); read by the micromechanics package and NIGET
   imprint.xyz          the top surface at the last step as plain 'x y z' lines, nm: every vertex at its
                        deformed position, height relative to the undeformed surface, half and quarter
-                       models mirrored to the full plane (Gwyddion: import as XYZ data)
+                       models mirrored to the full plane (Gwyddion: import as XYZ data); for an
+                       axisymmetric section, the pixels of imprint.gsf (its profile revolved)
   imprint.gsf          the same surface interpolated linearly onto a square grid (Gwyddion Simple Field,
-                       metres), centred on the indenter axis
+                       metres), centred on the indenter axis; a section's profile interpolated at each
+                       pixel's distance from the axis
 
 Both curves start with the undeformed state (t = 0, depth 0, load 0), which the CSV does not list, so
 that NIGET's contact point (whose depth and force it subtracts from the curve) is the first touch.
@@ -33,7 +35,7 @@ import sys
 import numpy as np
 
 from heightmap import grid_axis, write_gsf  # this script's folder
-from runfiles import InputError, mirror, open_fields, read_curve, top_surface
+from runfiles import InputError, mirror, open_fields, read_curve, top_profile, top_surface
 
 CSV_NAME, SUMMARY_NAME, H5_NAME = "load_displacement.csv", "summary.json", "indent.h5"
 # Steps end exactly on the load program's segment ends (src/solvers/loadpath.c); the CSV prints t with 10
@@ -177,11 +179,16 @@ def main(argv=None):
         h5, h5_path = open_fields(args.run_dir, H5_NAME, "the imprint needs -output_fields 1")
         with h5:
             options, start_time = run_options(args.run_dir, h5)
-            xy, height, tris, axes, tol = top_surface(h5, h5_path)
+            profile = top_profile(h5, h5_path)
+            if profile is None:
+                xy, height, tris, axes, tol = top_surface(h5, h5_path)
         hold = option_value(options, "-load_hold", 0.0)
-        xy, tris, source, _ = mirror(xy, tris, axes, tol)
-        height = height[source]
-        reach = float(min(np.abs(xy[:, 0]).max(), np.abs(xy[:, 1]).max()))
+        if profile is None:
+            xy, tris, source, _ = mirror(xy, tris, axes, tol)
+            height = height[source]
+            reach = float(min(np.abs(xy[:, 0]).max(), np.abs(xy[:, 1]).max()))
+        else:
+            reach = float(profile[0].max())
         if args.gsf_half_width is not None:
             half = args.gsf_half_width
         else:
@@ -191,7 +198,13 @@ def main(argv=None):
             radius = float(np.sqrt(a_max / np.pi)) if a_max > 0 else float(curve["depth_nm"].max())
             half = min(3.0 * radius, 0.99 * reach)
         gx = grid_axis(half, args.gsf_pixels)
-        grid = interpolate(xy, height, tris, gx, gx)
+        if profile is None:
+            grid = interpolate(xy, height, tris, gx, gx)
+        else:
+            # the section revolved: the profile at each pixel's distance from the axis
+            X, Y = np.meshgrid(gx, gx)
+            grid = np.interp(np.hypot(X, Y), *profile, right=np.nan)
+            xy, height = np.column_stack([X.ravel(), Y.ravel()]), grid.ravel()
         if np.isnan(grid).any():
             raise InputError(f"imprint.gsf: {int(np.isnan(grid).sum())} grid nodes lie outside the top surface "
                              f"(half-width {half:.6g} nm): give a smaller --gsf-half-width")

@@ -111,6 +111,12 @@ indent_script_test(axisymmetric_revolve ${INDENT_PYTHON} ${CMAKE_CURRENT_SOURCE_
   ${CMAKE_CURRENT_BINARY_DIR}/axisymmetric_revolve)
 set_tests_properties(axisymmetric_xdmf_index axisymmetric_xdmf_meshio axisymmetric_xdmf_paraview axisymmetric_plots
   axisymmetric_revolve PROPERTIES FIXTURES_REQUIRED axi_example)
+# scripts/export-curves.py on the section: the NIGET and Hysitron curves as for 3D runs, and the imprint revolved:
+# imprint.gsf the top profile at each pixel's radius (measured: 4e-7 nm of 14.5, float32), imprint.xyz its pixels.
+set(TEST_LABEL regression)
+indent_script_test(export_curves_section ${INDENT_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_export_curves.py
+  ${AXI_EXAMPLE_DIR} --workdir ${CMAKE_CURRENT_BINARY_DIR}/export_curves/section)
+set_tests_properties(export_curves_section PROPERTIES FIXTURES_REQUIRED axi_example)
 
 # A section stopped after 3 steps on 2 ranks and continued on 1 gives the uninterrupted run's curve, summary and
 # fields (measured: 1e-14 of their largest values); other model options or another mesh are refused.

@@ -78,6 +78,22 @@ def run_surface(run_dir):
     return p, keep, tris
 
 
+def run_profile(run_dir):
+    """The top profile (deformed radius, height; by radius) of an axisymmetric section's last step, or None for a
+    3D run (a section: 2D cells, every vertex on y = 0)."""
+    with h5py.File(os.path.join(run_dir, "indent.h5"), "r") as f:
+        x = f["geometry/vertices"][:]
+        cells = f["topology/cells"][:]
+        u = f["fields/displacement"][-1]
+    tol = 1e-9 * np.ptp(x, axis=0).max()
+    if cells.shape[1] not in (3, 4) or np.abs(x[:, 1]).max() > tol:
+        return None
+    top = np.flatnonzero(np.abs(x[:, 2] - x[:, 2].max()) <= tol)
+    r, h = x[top, 0] + u[top, 0], u[top, 2]
+    order = np.argsort(r)
+    return r[order], h[order]
+
+
 # ------------------------------------------------------------------------------------- readers
 def read_niget(path):
     """NIGET's reader: the header by sscanf('#NIGET %d %d %d %d'), then every line of which two
@@ -234,6 +250,37 @@ def check_gsf(path, p, keep, tris, curve):
           f"{p[keep, 2].min():.5g} nm; pile-up {z.max():.4g} nm")
 
 
+def check_section(out, profile, curve):
+    """A section's imprint.gsf is its profile revolved (interpolated at each pixel's distance from the axis), and
+    imprint.xyz the same pixels."""
+    r, h = profile
+    fields, grid, why = read_gsf(os.path.join(out, "imprint.gsf"))
+    check(fields is not None, f"imprint.gsf follows the GSF layout {why}")
+    if fields is None:
+        return
+    nx, ny = int(fields["XRes"]), int(fields["YRes"])
+    xr, x0 = float(fields["XReal"]) * 1e9, float(fields["XOffset"]) * 1e9
+    radius = np.sqrt(curve["contact_area_nm2"].max() / np.pi)
+    check(nx == ny and abs(x0 + xr / 2) < 1e-6 * xr and abs(xr / 2 - 3 * radius) <= 1e-6 * xr,
+          f"imprint.gsf: {nx} x {ny} pixels, {xr:.6g} nm wide, centred on the axis: 3 contact radii ({radius:.6g} nm)")
+    g = x0 + (np.arange(nx) + 0.5) * xr / nx
+    X, Y = np.meshgrid(g, g)
+    ref = np.interp(np.hypot(X, Y), r, h)
+    z = grid.astype(float) * 1e9
+    scale = np.abs(h).max()
+    err = np.abs(z - ref).max()
+    check(err <= 1e-6 * scale, f"imprint.gsf heights are the section's top profile at each pixel's radius (largest "
+          f"difference {err:.3g} nm of {scale:.4g} nm; float32)")
+    i, j = np.unravel_index(np.argmin(z), z.shape)
+    check(np.hypot(g[j], g[i]) <= xr / nx, f"deepest pixel {z.min():.5g} nm at ({g[j]:.4g}, {g[i]:.4g}) nm, on the "
+          f"axis (deepest vertex {h.min():.5g} nm)")
+    data = np.loadtxt(os.path.join(out, "imprint.xyz"))
+    pts = np.column_stack([X.ravel(), Y.ravel(), ref.ravel()])
+    ok = data.shape == pts.shape
+    check(ok and close(data[np.lexsort((data[:, 1], data[:, 0]))], pts[np.lexsort((pts[:, 1], pts[:, 0]))], 1e-9, 1e-9),
+          f"imprint.xyz: the {len(pts)} pixels of imprint.gsf with the profile's heights, read {data.shape}")
+
+
 def check_gwyddion(out):
     exe = shutil.which("gwyddion")
     if not exe:
@@ -271,9 +318,13 @@ def main():
     hold = float(words[words.index("-load_hold") + 1]) if "-load_hold" in words else 0.0
     check_niget(os.path.join(out, "curve.niget"), curve, summary, hold)
     check_hysitron(os.path.join(out, "curve_hysitron.txt"), curve)
-    p, keep, tris = run_surface(args.run_dir)
-    check_xyz(os.path.join(out, "imprint.xyz"), p[keep])
-    check_gsf(os.path.join(out, "imprint.gsf"), p, keep, tris, curve)
+    profile = run_profile(args.run_dir)
+    if profile is not None:
+        check_section(out, profile, curve)
+    else:
+        p, keep, tris = run_surface(args.run_dir)
+        check_xyz(os.path.join(out, "imprint.xyz"), p[keep])
+        check_gsf(os.path.join(out, "imprint.gsf"), p, keep, tris, curve)
     check_gwyddion(out)
     bad = subprocess.run([sys.executable, EXPORT, os.path.join(out, "missing")], capture_output=True, text=True)
     check(bad.returncode == 2 and bad.stderr.startswith("export-curves: error:"),
