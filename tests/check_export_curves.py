@@ -281,6 +281,26 @@ def check_section(out, profile, curve):
           f"imprint.xyz: the {len(pts)} pixels of imprint.gsf with the profile's heights, read {data.shape}")
 
 
+def check_fit_reads(out, run_dir):
+    """scripts/indent-fit.py's --imprint reads both files back (centred on the axis, leveled on its ring) as the
+    run's own top surface, to float32 and to the leveling (a plane on the map, a mean on the model)."""
+    sys.path.insert(0, os.path.join(HERE, "..", "scripts"))
+    from indentfit import imprint
+    surface = imprint.run_surface(run_dir)
+    for name in ("imprint.xyz", "imprint.gsf"):
+        try:
+            m = imprint.load(os.path.join(out, name), "nm", "0,0")
+        except imprint.ImprintError as e:
+            # an elastic run, unloaded, leaves no print to fit: refused in one line
+            z = np.loadtxt(os.path.join(out, "imprint.xyz"))[:, 2]
+            check("no imprint" in str(e) and z.min() > -1e-6,
+                  f"indent-fit's --imprint refuses {name} of a run that left no print: {e}")
+            continue
+        d = float(np.abs(m.model_heights(surface) - m.z).max())
+        check(d <= 1e-3 * m.depth, f"indent-fit's --imprint reads {name} as the run's surface: {len(m.z)} points, "
+              f"largest difference {d:.3g} nm of the {m.depth:.4g} nm imprint")
+
+
 def check_gwyddion(out):
     exe = shutil.which("gwyddion")
     if not exe:
@@ -325,6 +345,7 @@ def main():
         p, keep, tris = run_surface(args.run_dir)
         check_xyz(os.path.join(out, "imprint.xyz"), p[keep])
         check_gsf(os.path.join(out, "imprint.gsf"), p, keep, tris, curve)
+    check_fit_reads(out, args.run_dir)
     check_gwyddion(out)
     bad = subprocess.run([sys.executable, EXPORT, os.path.join(out, "missing")], capture_output=True, text=True)
     check(bad.returncode == 2 and bad.stderr.startswith("export-curves: error:"),
