@@ -101,7 +101,8 @@ def parse_args(argv):
                     help="length unit of the x y z maps after it (a .gsf names its own)")
     ap.add_argument("--imprint-center", default="deepest",
                     help="the indenter's axis on the maps after it: X,Y in the map's frame (nm), or 'deepest' "
-                         "(the centroid of the pixels within 10%% of the deepest; default)")
+                         "(the centroid of the pixels deeper than half the imprint, then the shift that registers "
+                         "the model's surface on the map at every evaluation; default)")
     ap.add_argument("--imprint-rotation", type=float, default=0.0,
                     help="the direction on the maps after it (degrees from their x axis) of the model's x axis")
     ap.add_argument("--imprint-radius", type=float,
@@ -175,10 +176,9 @@ def load_curves(args):
             o = c.imprint_opts
             try:
                 c.imprint = imprint.load(o["path"], o["unit"], o["center"], o["rotation"], o["radius"], o["points"],
-                                         o["weight"])
+                                         o["weight"], o["noise"])
             except imprint.ImprintError as e:
                 raise FitError(str(e)) from None
-            c.imprint.noise = o["noise"]
         out.append(c)
     return out
 
@@ -388,7 +388,7 @@ def noise_sigma(args, fit):
     for c in fit.curves:
         parts += [np.full(len(h), s * scale) for _, h, _, scale in misfit.fitted_branches(c.branches, *fit.w)]
         if c.imprint:
-            if not (c.imprint.noise or 0) > 0:
+            if c.imprint.noise is None:
                 raise FitError(f"--noise {args.noise} uN: give the height noise of {c.imprint.path} as well "
                                "(--imprint-noise NM before --imprint)")
             parts.append(np.full(len(c.imprint.z), c.imprint.noise * c.imprint.scale))
@@ -417,16 +417,15 @@ def write_outputs(args, fit, sol, res):
                     "run": rec["dir"]} for c, rec in zip(fit.curves, recs)],
         "imprints": [],
     }
-    imprint_lines = []
+    imprint_lines, fitted = [], {}
     for c, rec in zip(fit.curves, recs):
         if not c.imprint:
             continue
         m = c.imprint
-        surface = fit.surface(rec)
-        diff = m.model_heights(surface) - m.z
+        fitted[c.index] = m.model_heights(fit.surface(rec))  # registered at the optimum: center_found() below
         path = os.path.join(out, f"imprint-{c.index + 1}.csv")
-        m.write_fitted(path, surface)
-        rms_nm = float(np.sqrt(np.mean(diff ** 2)))
+        m.write_fitted(path, fitted[c.index])
+        rms_nm = float(np.sqrt(np.mean((fitted[c.index] - m.z) ** 2)))
         result["imprints"].append({"file": m.path, "curve": c.index + 1, "center_nm": m.center_found().tolist(),
                                    "registered": m.register,
                                    "rotation_deg": m.rotation, "radius_nm": m.radius, "ring_nm": list(m.ring),
@@ -471,10 +470,11 @@ def write_outputs(args, fit, sol, res):
         w.writerows(fit.history)
     print(text, end="")
     if not args.no_plots:
-        plots(args, fit, sims, recs)
+        plots(args, fit, sims, fitted)
 
 
-def plots(args, fit, sims, recs):
+def plots(args, fit, sims, fitted):
+    """fit.png, misfit.png, and imprint-K.png for each curve K whose imprint's model heights are in fitted."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -497,14 +497,14 @@ def plots(args, fit, sims, recs):
     fig.tight_layout()
     fig.savefig(os.path.join(args.out, "fit.png"), dpi=120)
     plt.close(fig)
-    for c, rec in zip(fit.curves, recs):
-        if not c.imprint:
+    for c in fit.curves:
+        if c.index not in fitted:
             continue
         m = c.imprint
         fig, ax = plt.subplots(figsize=(6.4, 4.0))
         r = np.hypot(m.x, m.y)
         ax.plot(r, m.z, ".", ms=2, color="C0", label=f"measured: {os.path.basename(m.path)}")
-        ax.plot(r, m.model_heights(fit.surface(rec)), ".", ms=2, color="C1", label="fitted")
+        ax.plot(r, fitted[c.index], ".", ms=2, color="C1", label="fitted")
         ax.set_xlabel("distance from the axis (nm)")
         ax.set_ylabel("height (nm)")
         ax.legend(fontsize="small", markerscale=4)

@@ -405,6 +405,14 @@ class ImprintOptions(unittest.TestCase):
         self.assertIn(f"{bad}:2: 2 numbers, not 3", r.stderr)
         r = self.run_fit("--model", self.model, "--curve", self.curve, "--imprint-center", "3", "--imprint", bad)
         self.assertIn("--imprint-center 3: 'deepest' or X,Y in nm", r.stderr)
+        g = np.linspace(-100, 100, 21)
+        X, Y = np.meshgrid(g, g)
+        pit = os.path.join(self.dir, "pit.xyz")
+        np.savetxt(pit, np.column_stack([X.ravel(), Y.ravel(), bowl(X, Y, 10.0, 40.0).ravel()]))
+        r = self.run_fit("--model", self.model, "--curve", self.curve, "--imprint-noise", "-1", "--imprint", pit)
+        self.assertEqual(r.returncode, 1)
+        self.assertEqual(r.stderr.strip(), f"indent-fit: error: --imprint {pit}: the imprint's weight and noise must "
+                         "be > 0 and its points >= 16")
 
 
 if __name__ == "__main__":

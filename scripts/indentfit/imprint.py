@@ -57,9 +57,11 @@ class MeasuredImprint:
     map and again on the map leveled around it (a tilted map's deepest pixels lie downhill of the axis), then
     refined by registering the model's surface at every evaluation."""
 
-    def __init__(self, hmap, center=None, rotation_deg=0.0, radius=None, ring=None, points=2000, weight=1.0):
-        if weight <= 0 or points < 16:
-            raise ImprintError(f"{hmap.path}: the imprint's weight must be > 0 and its points >= 16")
+    def __init__(self, hmap, center=None, rotation_deg=0.0, radius=None, ring=None, points=2000, weight=1.0,
+                 noise=None):
+        if weight <= 0 or points < 16 or (noise is not None and not noise > 0):
+            raise ImprintError(f"{hmap.path}: the imprint's weight and noise must be > 0 and its points >= 16")
+        self.noise = noise  # height noise (nm) for the intervals when the curves' noise is given in uN
         self.register = center is None
         if center is None:
             first = Frame(hmap, pit_centroid(hmap.x, hmap.y, hmap.z), rotation_deg, ring)
@@ -116,8 +118,8 @@ class MeasuredImprint:
         return self.center + np.array([np.cos(t) * self.shift[0] - np.sin(t) * self.shift[1],
                                        np.sin(t) * self.shift[0] + np.cos(t) * self.shift[1]])
 
-    def write_fitted(self, path, surface):
-        fit = self.model_heights(surface)
+    def write_fitted(self, path, fit):
+        """The fitted pixels' measured heights beside fit, the model's (model_heights) at the same pixels."""
         with open(path, "w") as f:
             f.write("x_nm,y_nm,r_nm,measured_height_nm,fitted_height_nm\n")
             for a, b, m, s in zip(self.x, self.y, self.z, fit):
@@ -179,10 +181,10 @@ def parse_center(text):
     return c
 
 
-def load(path, unit="nm", center=None, rotation=0.0, radius=None, points=2000, weight=1.0):
+def load(path, unit="nm", center=None, rotation=0.0, radius=None, points=2000, weight=1.0, noise=None):
     """The measured imprint of indent-fit's --imprint and its options; errors name the option."""
     c = parse_center(center)
     try:
-        return MeasuredImprint(heightmap.read_map(path, unit), c, rotation, radius, None, points, weight)
+        return MeasuredImprint(heightmap.read_map(path, unit), c, rotation, radius, None, points, weight, noise)
     except (heightmap.MapError, ImprintError) as e:
         raise ImprintError(f"--imprint {e}") from None

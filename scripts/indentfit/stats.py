@@ -53,7 +53,7 @@ def analyse(J, r, params, u, noise_sigma=None, spread_limit=0.05, model_error=0.
         sigma = np.asarray(noise_sigma, float)
         noise = "the measured noise"
     t = float(spstats.t.ppf(0.975, dof))
-    U, sv, Vt = np.linalg.svd(J, full_matrices=False)
+    _, sv, Vt = np.linalg.svd(J, full_matrices=False)
     tiny = sv.max() * 1e-12 if sv.max() > 0 else 1.0
     inv = np.where(sv > tiny, 1.0 / np.maximum(sv, tiny), np.inf)
     with np.errstate(invalid="ignore"):
