@@ -379,11 +379,15 @@ def plot_stress_slice(run, curve, path):
     xmin = -run.hi[0] if 0 in run.mirror_axes else run.lo[0]
     window = ((max(-reach, xmin), min(reach, run.hi[0])), (max(run.z_top - reach, run.lo[2]), run.z_top))
     section = section_y0(run)
-    fig, axes = plt.subplots(2, 1, figsize=(7.5, 8))
+    compaction = run.optional_field("compaction", last)  # a densifying material's (a glass)
+    fig, axes = plt.subplots(2 if compaction is None else 3, 1, figsize=(7.5, 8 if compaction is None else 12))
     draw_slice(axes[0], fig, section, window, run.field("von_mises", peak), "von Mises stress", "GPa",
                f"von Mises stress at P_max = {load[peak]:.4g} uN (h = {depth[peak]:.4g} nm)")
     draw_slice(axes[1], fig, section, window, run.field("plastic_strain", last), "equivalent plastic strain", "",
                f"equivalent plastic strain at the last step (h = {depth[last]:.4g} nm)")
+    if compaction is not None:
+        draw_slice(axes[2], fig, section, window, compaction, "plastic compaction -tr(eps_p)", "",
+                   f"plastic compaction (densification) at the last step (h = {depth[last]:.4g} nm)")
     save(fig, path)
 
 

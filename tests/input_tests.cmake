@@ -69,7 +69,7 @@ indent_script_test(bad_plastic_voce_rate ${EXPECT_ERROR} "-domain_voce_rate must
   ${INDENT} ${OK_BOX} ${PLASTIC} -domain_voce_rate -2 -bc_fixed bottom)
 indent_script_test(bad_plastic_kinematic ${EXPECT_ERROR} "-domain_kinematic must be >= 0"
   ${INDENT} ${OK_BOX} ${PLASTIC} -domain_kinematic -2 -bc_fixed bottom)
-indent_script_test(bad_model ${EXPECT_ERROR} "-domain_model: 'viscous' is not one of elastic plastic"
+indent_script_test(bad_model ${EXPECT_ERROR} "-domain_model: 'viscous' is not one of elastic plastic densifying"
   ${INDENT} ${OK_BOX} ${ELASTIC} -domain_model viscous -bc_fixed bottom)
 indent_script_test(bad_hardening_law ${EXPECT_ERROR}
   "-domain_hardening: 'hollomon' is not one of voce linear power swift table"
@@ -84,6 +84,15 @@ indent_script_test(bad_hardening_table_falling ${EXPECT_ERROR}
   "falling_curve.csv', line 4: the stress falls from 0.4 to 0.38 GPa. the curve must not fall"
   ${INDENT} ${OK_BOX} -domain_young 100 -domain_poisson 0.3 -domain_model plastic -domain_hardening table
   -domain_hardening_file ${CMAKE_CURRENT_SOURCE_DIR}/data/falling_curve.csv -bc_fixed bottom)
+set(DENSIFYING -domain_young 72 -domain_poisson 0.17 -domain_model densifying -domain_yield 6 -bc_fixed bottom)
+indent_script_test(bad_densifying_no_pressure ${EXPECT_ERROR}
+  "Region 'domain' is densifying: option -domain_yield_pressure \\(GPa\\) is missing" ${INDENT} ${OK_BOX} ${DENSIFYING})
+indent_script_test(bad_densifying_pressure ${EXPECT_ERROR} "-domain_yield_pressure must be > 0 \\(GPa\\), got -1"
+  ${INDENT} ${OK_BOX} ${DENSIFYING} -domain_yield_pressure -1)
+indent_script_test(bad_densifying_modulus ${EXPECT_ERROR} "-domain_densification_modulus must be >= 0 \\(GPa\\), got -5"
+  ${INDENT} ${OK_BOX} ${DENSIFYING} -domain_yield_pressure 10 -domain_densification_modulus -5)
+indent_script_test(bad_densifying_hardening_option ${EXPECT_ERROR} "Unknown or unused option\\(s\\): -domain_hardening"
+  ${INDENT} ${OK_BOX} ${DENSIFYING} -domain_yield_pressure 10 -domain_hardening linear)
 indent_script_test(bad_plastic_option_on_elastic ${EXPECT_ERROR} "Unknown or unused option\\(s\\): -domain_yield"
   ${INDENT} ${OK_BOX} ${ELASTIC} -domain_yield 0.3 -bc_fixed bottom)
 indent_script_test(bad_load_cutback ${EXPECT_ERROR} "-load_cutback must lie in \\(0, 1\\)"

@@ -85,7 +85,7 @@ static PetscErrorCode CheckStep(IndApp app, const IndStepResult *step, void *ctx
   Check             *c = (Check *)ctx;
   const IndMaterial *m = IndMaterialsGet(IndAppGetMaterials(app), 0);
   PetscReal          eps, p, sig, scale;
-  IndCellFields      f  = {c->stress, c->strain_avg, c->p, c->back, c->yielding};
+  IndCellFields      f  = {c->stress, c->strain_avg, c->p, c->back, c->yielding, NULL};
   PetscReal          es = 0, ep = 0;
 
   PetscFunctionBeginUser;

@@ -32,6 +32,8 @@ typedef struct _p_IndOutput *IndOutput;
 PetscErrorCode IndOutputCreate(IndMesh mesh, IndDisc disc, IndOutput *out);
 /* Adds the vertex fields contact_pressure (GPa) and contact_status (0 open, 1 stick, 2 slip). */
 PetscErrorCode IndOutputSetContact(IndOutput out, IndContact contact);
+/* With a densifying region the fields add the cells' plastic compaction (before the first write). */
+PetscErrorCode IndOutputSetDensifying(IndOutput out, PetscBool densifying);
 PetscErrorCode IndOutputDestroy(IndOutput *out);
 /* Collective: the bytes of field values one written step adds to indent.h5 (0 without field output). */
 PetscErrorCode IndOutputBytesPerStep(IndOutput out, PetscReal *bytes);

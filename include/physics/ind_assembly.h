@@ -34,6 +34,7 @@ typedef struct {
   PetscReal *plastic;     /* accumulated equivalent plastic strain p */
   PetscReal *back_stress; /* equivalent back stress sqrt(3/2) |x|, GPa */
   PetscReal *yielding;    /* fraction of the cell's volume that yielded in the last step, 0..1 */
+  PetscReal *compaction;  /* plastic compaction -tr(eps_p) (a densifying material's); NULL: not wanted */
 } IndCellFields;
 
 PetscErrorCode IndAssemblyCreate(IndDisc disc, IndMaterials mats, IndHistory history, IndAssembly *assembly);

@@ -1,12 +1,12 @@
 #pragma once
 /* A material per volume region, read from options prefixed by the region's name (-film_young):
    linear elastic, or elasto-plastic (von Mises, Voce or linear isotropic + Prager kinematic hardening)
-   with -<region>_model plastic. */
+   with -<region>_model plastic, or densifying (a pressure-dependent ellipse for glasses, ind_densification.h). */
 #include "ind_mesh.h"
 #include "ind_disc.h"
 #include "ind_plasticity.h"
 
-typedef enum { IND_MODEL_ELASTIC, IND_MODEL_PLASTIC } IndModel;
+typedef enum { IND_MODEL_ELASTIC, IND_MODEL_PLASTIC, IND_MODEL_DENSIFYING } IndModel;
 extern const char *const IndModelTypes[];
 
 typedef struct {
@@ -22,6 +22,8 @@ typedef struct _p_IndMaterials *IndMaterials;
 
 /* Whether any region is elasto-plastic (collective-free: every rank reads the same options). */
 PetscBool      IndMaterialsArePlastic(IndMaterials mats);
+/* Whether any region is densifying (its plastic strain has a trace). */
+PetscBool      IndMaterialsAreDensifying(IndMaterials mats);
 PetscErrorCode IndMaterialsCreate(IndMesh mesh, IndDisc disc, IndMaterials *mats);
 PetscErrorCode IndMaterialsDestroy(IndMaterials *mats);
 /* The regions' materials, in the mesh's order of volume regions. */

@@ -29,6 +29,8 @@ typedef struct {
   const PetscReal       *table;  /* a tabulated law's points, ntable pairs (eps_p, stress in GPa); its own */
   PetscInt               ntable;
   PetscReal              H;         /* Prager kinematic modulus, GPa: -<region>_kinematic */
+  PetscReal              yield_pressure; /* densifying: hydrostatic yield pressure p_c at no compaction, GPa */
+  PetscReal              densification_modulus; /* densifying: dp_c / d(compaction), GPa */
   PetscBool              elastic_only;   /* skip the return: linear elasticity with the same moduli */
   PetscInt               max_iterations; /* cap on the scalar return solve; 0 means 100 */
 } IndPlasticParams;
@@ -48,7 +50,7 @@ struct _IndHardeningLaw {
 
 /* History of a quadrature point at the end of a converged step; all zero for a virgin material. */
 typedef struct {
-  PetscReal eps_p[6]; /* plastic strain, engineering shears, deviatoric */
+  PetscReal eps_p[6]; /* plastic strain, engineering shears; deviatoric but for a densifying material */
   PetscReal x[6];     /* back stress, tensor components, deviatoric, GPa */
   PetscReal p;        /* accumulated equivalent plastic strain */
 } IndPlasticState;

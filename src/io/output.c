@@ -168,7 +168,7 @@ static PetscErrorCode OpenFile(IndOutput o)
    known), adds its views to indent.h5 and rewrites the XDMF index (xdmf.c). */
 static PetscErrorCode WriteXdmf(IndOutput o, PetscReal time)
 {
-  const IndXdmfField fields[] = {
+  const IndXdmfField all[] = {
     {"displacement", "Vector", PETSC_FALSE, 3},
     {"stress", "Matrix", PETSC_TRUE, 6}, /* Voigt xx,yy,zz,xy,yz,xz: not XDMF Tensor6 order */
     {"strain", "Matrix", PETSC_TRUE, 6},
@@ -176,10 +176,12 @@ static PetscErrorCode WriteXdmf(IndOutput o, PetscReal time)
     {"plastic_strain", "Scalar", PETSC_TRUE, 1},
     {"back_stress", "Scalar", PETSC_TRUE, 1},
     {"yielding", "Scalar", PETSC_TRUE, 1},
+    {"compaction", "Scalar", PETSC_TRUE, 1},
     {"contact_pressure", "Scalar", PETSC_FALSE, 1},
     {"contact_status", "Scalar", PETSC_FALSE, 1},
   };
-  const PetscInt    nfields = (PetscInt)(sizeof(fields) / sizeof(fields[0])) - (o->contact ? 0 : 2);
+  IndXdmfField      fields[sizeof(all) / sizeof(all[0])];
+  PetscInt          nfields = 0;
   const IndXdmfMesh mesh    = {"indent.h5",
                                o->planar ? (o->simplex ? "Triangle" : "Quadrilateral")
                                          : (o->simplex ? "Tetrahedron" : "Hexahedron"),
@@ -189,6 +191,11 @@ static PetscErrorCode WriteXdmf(IndOutput o, PetscReal time)
   char              path[PETSC_MAX_PATH_LEN];
 
   PetscFunctionBeginUser;
+  for (size_t k = 0; k < sizeof(all) / sizeof(all[0]); ++k) {
+    const PetscBool contact = !strncmp(all[k].name, "contact_", 8) ? PETSC_TRUE : PETSC_FALSE;
+    if ((contact && !o->contact) || (!strcmp(all[k].name, "compaction") && !o->densifying)) continue;
+    fields[nfields++] = all[k];
+  }
   if (!o->info_set) {
     o->times[o->nsteps] = time;
     for (int i = 0; i < IND_OUTPUT_INFO; ++i) info[i] = NAN;
@@ -259,6 +266,10 @@ static PetscErrorCode CreateFieldObjects(IndOutput o)
   PetscCall(PetscObjectSetName((PetscObject)o->plastic, "plastic_strain"));
   PetscCall(PetscObjectSetName((PetscObject)o->back, "back_stress"));
   PetscCall(PetscObjectSetName((PetscObject)o->yielding, "yielding"));
+  if (o->densifying) {
+    PetscCall(DMCreateGlobalVector(o->c1dm, &o->compaction));
+    PetscCall(PetscObjectSetName((PetscObject)o->compaction, "compaction"));
+  }
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   PetscCall(VecCreateMPI(comm, rank ? 0 : 1, 1, &o->stepnum));
   PetscCall(PetscObjectSetName((PetscObject)o->stepnum, "step"));
@@ -351,8 +362,8 @@ PetscErrorCode IndOutputBytesPerStep(IndOutput o, PetscReal *bytes)
   PetscCall(CountVertices(o->dm, &nvert));
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &ncell, 1, MPIU_INT, MPI_SUM, PetscObjectComm((PetscObject)o->dm)));
   /* per vertex: displacement (3), contact pressure and status (2); per cell: stress and strain (6 each),
-     von Mises, plastic strain, back stress, yielding */
-  *bytes = sizeof(PetscReal) * ((PetscReal)nvert * (o->contact ? 5 : 3) + (PetscReal)ncell * 16);
+     von Mises, plastic strain, back stress, yielding (and compaction) */
+  *bytes = sizeof(PetscReal) * ((PetscReal)nvert * (o->contact ? 5 : 3) + (PetscReal)ncell * (o->densifying ? 17 : 16));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -396,6 +407,14 @@ PetscErrorCode IndOutputSetContact(IndOutput o, IndContact contact)
   PetscFunctionBeginUser;
   PetscCheck(!o->vdm, PetscObjectComm((PetscObject)o->dm), PETSC_ERR_ORDER, "Set the contact before the first write");
   o->contact = contact;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode IndOutputSetDensifying(IndOutput o, PetscBool densifying)
+{
+  PetscFunctionBeginUser;
+  PetscCheck(!o->vdm, PetscObjectComm((PetscObject)o->dm), PETSC_ERR_ORDER, "Set the fields before the first write");
+  o->densifying = densifying;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -457,6 +476,7 @@ PetscErrorCode IndOutputWriteStep(IndOutput o, PetscReal time, Vec U, IndAssembl
   PetscCall(VecGetArray(o->plastic, &o->cells.plastic));
   PetscCall(VecGetArray(o->back, &o->cells.back_stress));
   PetscCall(VecGetArray(o->yielding, &o->cells.yielding));
+  if (o->compaction) PetscCall(VecGetArray(o->compaction, &o->cells.compaction));
   PetscCall(IndAssemblyCellAverages(assembly, o->Uloc, &o->cells));
   PetscCall(VecGetArray(o->vonmises, &vm));
   for (PetscInt i = 0; i < o->layout->ncell; ++i) vm[i] = IndVonMises(o->cells.stress + 6 * i);
@@ -466,6 +486,7 @@ PetscErrorCode IndOutputWriteStep(IndOutput o, PetscReal time, Vec U, IndAssembl
   PetscCall(VecRestoreArray(o->plastic, &o->cells.plastic));
   PetscCall(VecRestoreArray(o->back, &o->cells.back_stress));
   PetscCall(VecRestoreArray(o->yielding, &o->cells.yielding));
+  if (o->compaction) PetscCall(VecRestoreArray(o->compaction, &o->cells.compaction));
 
   PetscCall(PetscViewerHDF5SetTimestep(o->viewer, o->nsteps));
   PetscCall(PetscViewerHDF5PushGroup(o->viewer, "/fields"));
@@ -476,6 +497,7 @@ PetscErrorCode IndOutputWriteStep(IndOutput o, PetscReal time, Vec U, IndAssembl
   PetscCall(IndOutputViewField(o, o->plastic, PETSC_TRUE));
   PetscCall(IndOutputViewField(o, o->back, PETSC_TRUE));
   PetscCall(IndOutputViewField(o, o->yielding, PETSC_TRUE));
+  if (o->compaction) PetscCall(IndOutputViewField(o, o->compaction, PETSC_TRUE));
   if (o->contact) {
     PetscCall(GatherContactFields(o));
     PetscCall(IndOutputViewField(o, o->pressure, PETSC_FALSE));
@@ -539,6 +561,7 @@ PetscErrorCode IndOutputDestroy(IndOutput *o)
   PetscCall(VecDestroy(&(*o)->plastic));
   PetscCall(VecDestroy(&(*o)->back));
   PetscCall(VecDestroy(&(*o)->yielding));
+  PetscCall(VecDestroy(&(*o)->compaction));
   PetscCall(VecDestroy(&(*o)->stepnum));
   PetscCall(VecDestroy(&(*o)->Gc));
   PetscCall(VecDestroy(&(*o)->Cloc));

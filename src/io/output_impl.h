@@ -20,6 +20,8 @@ struct _p_IndOutput {
   PetscViewer viewer;
   DM          vdm, c6dm, c1dm; /* vertex (3 dof), cell (6 dof) and cell (1 dof) layouts */
   Vec           Uloc, vloc, disp, stress, strain, vonmises, plastic, back, yielding;
+  PetscBool     densifying; /* a region is densifying: the cells' compaction is written too */
+  Vec           compaction;
   Vec           stepnum; /* one value, on rank 0: the accepted step of the output step (/fields/step) */
   IndCellFields cells; /* per local cell, filled by the assembly */
   IndContact    contact;                      /* NULL without an indenter */

@@ -274,7 +274,7 @@ PetscErrorCode IndAssemblyCellAverages(IndAssembly a, Vec Uloc, IndCellFields *o
   PetscCall(VecGetArrayRead(a->history->committed, &hist));
   for (PetscInt i = 0; i < disc->ncell; ++i) {
     const IndMaterial *m   = &a->mats->mat[a->mats->cell_material[i]];
-    PetscReal          vol = 0, vol0 = 0, savg[6] = {0}, eavg[6] = {0}, pavg = 0, xavg = 0, yavg = 0;
+    PetscReal          vol = 0, vol0 = 0, savg[6] = {0}, eavg[6] = {0}, pavg = 0, xavg = 0, yavg = 0, cavg = 0;
     GatherCell(a, i, u, xn);
     for (PetscInt q = 0; q < nq; ++q) {
       const PetscReal *h = hist + i * stride + q * IND_HISTORY_NVAL;
@@ -293,6 +293,7 @@ PetscErrorCode IndAssemblyCellAverages(IndAssembly a, Vec Uloc, IndCellFields *o
       pavg += w0 * st->p;
       xavg += w0 * IndVonMises(st->x);
       yavg += h[IND_HISTORY_DP] > 0 ? w0 : 0.0;
+      cavg -= w0 * (st->eps_p[0] + st->eps_p[1] + st->eps_p[2]);
     }
     for (int k = 0; k < 6; ++k) {
       out->stress[6 * i + k] = savg[k] / vol;
@@ -301,6 +302,7 @@ PetscErrorCode IndAssemblyCellAverages(IndAssembly a, Vec Uloc, IndCellFields *o
     out->plastic[i]     = pavg / vol0;
     out->back_stress[i] = xavg / vol0;
     out->yielding[i]    = yavg / vol0;
+    if (out->compaction) out->compaction[i] = cavg / vol0;
   }
   PetscCall(VecRestoreArrayRead(a->history->committed, &hist));
   PetscCall(VecRestoreArrayRead(a->Xloc, &xn));

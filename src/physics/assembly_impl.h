@@ -27,6 +27,7 @@ struct _p_IndAssembly {
 #include "material_impl.h"
 #include "history_impl.h"
 #include "ind_elasticity.h"
+#include "ind_densification.h"
 #include "ind_mat3.h"
 
 /* The displacements (ue) and the node positions (xe, from xn, the array of the discretisation's
@@ -55,8 +56,16 @@ static inline IndPlasticStatus MaterialResponse(const IndMaterial *m, IndTangent
     if (D) IndElasticTangent(m->kappa, m->mu, D);
     return IND_PLASTIC_OK;
   }
-  status = IndPlasticUpdate(&m->plastic, eps, (const IndPlasticState *)old, trial ? (IndPlasticState *)trial : &scratch,
-                            sigma, tangent == IND_TANGENT_CONSISTENT ? D : NULL, dp);
+  if (m->model == IND_MODEL_DENSIFYING) {
+    status = IndDensifyingUpdate(&m->plastic, eps, (const IndPlasticState *)old,
+                                 trial ? (IndPlasticState *)trial : &scratch, sigma,
+                                 tangent == IND_TANGENT_CONSISTENT ? D : NULL, dp);
+    /* the cell loops assemble symmetric element matrices */
+    if (D && tangent == IND_TANGENT_CONSISTENT && m->plastic.densification_modulus > 0) IndDensifyingSymmetrize(D);
+  } else
+    status = IndPlasticUpdate(&m->plastic, eps, (const IndPlasticState *)old,
+                              trial ? (IndPlasticState *)trial : &scratch, sigma,
+                              tangent == IND_TANGENT_CONSISTENT ? D : NULL, dp);
   if (trial) trial[IND_HISTORY_DP] = *dp;
   if (D && tangent == IND_TANGENT_ELASTIC) IndElasticTangent(m->kappa, m->mu, D);
   return status;

@@ -77,7 +77,7 @@ static IndPlasticStatus Stiffness(const IndMaterial *m, IndTangent tangent, Pets
   return status;
 }
 
-/* The committed state is the converged one: its stress is elastic in eps - eps_p (eps_p is deviatoric), with no
+/* The committed state is the converged one: its stress is elastic in eps - eps_p (with its trace, if any), with no
    return map to repeat. */
 static void Fields(const IndMaterial *m, PetscInt nb, const PetscReal *G, const PetscReal *hoop, const PetscReal *ue,
                    const PetscReal *h, PetscReal sigma[6], PetscReal e[6], PetscReal *w)

@@ -2,8 +2,9 @@
 #include "ind_material.h"
 #include "ind_elasticity.h"
 #include "ind_hardening.h"
+#include "ind_densification.h"
 
-const char *const IndModelTypes[] = {"elastic", "plastic", "IndModel", "IND_MODEL_", NULL};
+const char *const IndModelTypes[] = {"elastic", "plastic", "densifying", "IndModel", "IND_MODEL_", NULL};
 
 static PetscErrorCode ReadPlastic(MPI_Comm comm, const char prefix[], IndMaterial *m)
 {
@@ -29,6 +30,34 @@ static PetscErrorCode ReadPlastic(MPI_Comm comm, const char prefix[], IndMateria
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The ellipse of ind_densification.h: no hardening law; the options name its own parameters. */
+static PetscErrorCode ReadDensifying(MPI_Comm comm, const char prefix[], IndMaterial *m)
+{
+  IndPlasticParams *pp = &m->plastic;
+  char              title[2 * IND_NAME_LEN + 64];
+  PetscBool         has_yield, has_pc;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscSNPrintf(title, sizeof(title), IND_TITLE "Densifying plasticity of volume region '%s' (-%smodel "
+    "densifying)", m->region, prefix));
+  PetscOptionsBegin(comm, prefix, title, "Material");
+  PetscCall(IndOptionsReal("-yield", "von Mises stress at which it yields without pressure", "GPa", IND_REQUIRED,
+    pp->R0, &pp->R0, &has_yield));
+  PetscCall(IndOptionsReal("-yield_pressure", "Pressure at which it yields (compacts) without shear", "GPa",
+    IND_REQUIRED, pp->yield_pressure, &pp->yield_pressure, &has_pc));
+  PetscCall(IndOptionsReal("-densification_modulus", "Growth of the yield pressure with compaction -tr(eps_p)",
+    "GPa", NULL, pp->densification_modulus, &pp->densification_modulus, NULL));
+  PetscCall(IndOptionsInt("-return_max_it", "Iteration cap of the scalar return-map solve", "0, meaning 100",
+    pp->max_iterations, &pp->max_iterations, NULL));
+  PetscOptionsEnd();
+  if (IndHelpListing()) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCheck(has_yield, comm, PETSC_ERR_ARG_WRONG, "Region '%s' is densifying: option -%syield (GPa) is missing",
+    m->region, prefix);
+  PetscCheck(has_pc, comm, PETSC_ERR_ARG_WRONG,
+    "Region '%s' is densifying: option -%syield_pressure (GPa) is missing", m->region, prefix);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscErrorCode ReadMaterial(MPI_Comm comm, const char region[], IndMaterial *m)
 {
   char      prefix[IND_NAME_LEN + 2], opt[IND_NAME_LEN + 32], title[2 * IND_NAME_LEN + 64];
@@ -46,6 +75,7 @@ static PetscErrorCode ReadMaterial(MPI_Comm comm, const char region[], IndMateri
   PetscOptionsEnd();
   if (IndHelpListing()) { /* the listing reads, it does not judge */
     if (m->model == IND_MODEL_PLASTIC) PetscCall(ReadPlastic(comm, prefix, m));
+    if (m->model == IND_MODEL_DENSIFYING) PetscCall(ReadDensifying(comm, prefix, m));
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%syoung", prefix));
@@ -59,6 +89,11 @@ static PetscErrorCode ReadMaterial(MPI_Comm comm, const char region[], IndMateri
   m->plastic.kappa        = m->kappa;
   m->plastic.mu           = m->mu;
   m->plastic.elastic_only = m->model == IND_MODEL_ELASTIC ? PETSC_TRUE : PETSC_FALSE;
+  if (m->model == IND_MODEL_DENSIFYING) {
+    PetscCall(ReadDensifying(comm, prefix, m));
+    PetscCall(IndDensifyingParamsCheck(&m->plastic, prefix, comm));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
   if (m->model == IND_MODEL_PLASTIC) PetscCall(ReadPlastic(comm, prefix, m));
   PetscCall(IndPlasticParamsCheck(&m->plastic, prefix, comm));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -124,7 +159,14 @@ PetscErrorCode IndMaterialsCreate(IndMesh mesh, IndDisc space, IndMaterials *out
 PetscBool IndMaterialsArePlastic(IndMaterials mats)
 {
   for (PetscInt k = 0; k < mats->n; ++k)
-    if (mats->mat[k].model == IND_MODEL_PLASTIC) return PETSC_TRUE;
+    if (mats->mat[k].model != IND_MODEL_ELASTIC) return PETSC_TRUE;
+  return PETSC_FALSE;
+}
+
+PetscBool IndMaterialsAreDensifying(IndMaterials mats)
+{
+  for (PetscInt k = 0; k < mats->n; ++k)
+    if (mats->mat[k].model == IND_MODEL_DENSIFYING) return PETSC_TRUE;
   return PETSC_FALSE;
 }
 
