@@ -1,8 +1,8 @@
 /* Unit test of the densifying plasticity kernel (src/physics/densification.c) against closed forms: hydrostatic
    compaction with and without densification hardening, pure shear (J2's), the J2 limit of a far cap, points
    returned onto the ellipse, the consistent tangent against central differences and its symmetry without
-   densification hardening (the assembly mirrors element matrices), and the checks of bad parameters. Exits non-zero, naming the check, on the
-   first failure. */
+   densification hardening (the assembly mirrors element matrices), and the checks of bad parameters. Exits
+   non-zero, naming the check, on the first failure. */
 #include <math.h>
 #include <string.h>
 #include "ind_densification.h"
@@ -63,7 +63,8 @@ static PetscErrorCode TestHydrostatic(PetscReal Hv)
     p_exact = ptr - m.kappa * c_exact;
     worst_p = PetscMax(worst_p, PetscAbsReal(Pressure(sigma) - p_exact) / p_exact);
     worst_c = PetscMax(worst_c, PetscAbsReal(-(st.eps_p[0] + st.eps_p[1] + st.eps_p[2]) - c_exact));
-    worst_dev = PetscMax(worst_dev, PetscAbsReal(sigma[0] - sigma[1]) + PetscAbsReal(sigma[3]) + PetscAbsReal(sigma[5]));
+    worst_dev =
+      PetscMax(worst_dev, PetscAbsReal(sigma[0] - sigma[1]) + PetscAbsReal(sigma[3]) + PetscAbsReal(sigma[5]));
   }
   PetscCall(PetscSNPrintf(label, sizeof(label), "hydrostatic, H_v %g: pressure (relative)", (double)Hv));
   CHECK_TOL(label, worst_p, 1e-12);
