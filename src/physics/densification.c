@@ -29,37 +29,31 @@ PetscErrorCode IndDensifyingParamsCheck(const IndPlasticParams *m, const char pr
    At the solution x = (g, c)
      r1 = (a q_tr)^2 + (beta b p_tr)^2 - sigma_s^2 = 0   (on the ellipse)
      r2 = c - c_old - g beta^2 b p_tr = 0               (the compaction the flow made)
-   Ret holds the factors at x and the partial derivatives of r with respect to x and to y = (q_tr, p_tr), from
-   which the consistent tangent follows (implicit differentiation). */
+   Partials holds the factors at x and the derivatives of r with respect to x and to y = (q_tr, p_tr), from which
+   the consistent tangent follows (implicit differentiation; r2 does not depend on q_tr). */
 typedef struct {
-  PetscReal a, b, beta, da, db_g, db_c;
-  PetscReal r1, r2, r1_g, r1_c, r2_g, r2_c, r1_q, r1_p, r2_p;
-} Ret;
+  PetscReal a, b, da, db_g, db_c;
+  PetscReal r1_g, r1_c, r2_g, r2_c, r1_q, r1_p, r2_p;
+} Partials;
 
-static PetscBool Evaluate(const IndPlasticParams *m, PetscReal q, PetscReal p, PetscReal c_old, PetscReal g,
-                          PetscReal c, Ret *r)
+static void EvaluatePartials(const IndPlasticParams *m, PetscReal q, PetscReal p, PetscReal g, PetscReal c,
+                             Partials *r)
 {
-  const PetscReal K = m->kappa, G = m->mu, sy = m->R0, pc = IndDensifyingYieldPressure(m, c);
-  PetscReal       dbeta;
+  const PetscReal K = m->kappa, G = m->mu, pc = IndDensifyingYieldPressure(m, c), beta = m->R0 / pc;
+  const PetscReal dbeta = c > 0 ? -beta * m->densification_modulus / pc : 0.0; /* d beta / dc */
 
-  if (!(pc > 0)) return PETSC_FALSE; /* a dilation that brought the cap to the origin */
-  r->beta = sy / pc;
-  dbeta   = c > 0 ? -r->beta * m->densification_modulus / pc : 0.0; /* d beta / dc */
   r->a    = 1.0 / (1.0 + 3.0 * G * g);
   r->da   = -3.0 * G * r->a * r->a;
-  r->b    = 1.0 / (1.0 + K * r->beta * r->beta * g);
-  r->db_g = -K * r->beta * r->beta * r->b * r->b;
-  r->db_c = -2.0 * K * g * r->beta * dbeta * r->b * r->b;
-  r->r1   = PetscSqr(r->a * q) + PetscSqr(r->beta * r->b * p) - sy * sy;
-  r->r2   = c - c_old - g * r->beta * r->beta * r->b * p;
-  r->r1_g = 2.0 * r->a * r->da * q * q + 2.0 * r->beta * r->beta * r->b * r->db_g * p * p;
-  r->r1_c = 2.0 * r->beta * dbeta * r->b * r->b * p * p + 2.0 * r->beta * r->beta * r->b * r->db_c * p * p;
-  r->r2_g = -r->beta * r->beta * p * (r->b + g * r->db_g);
-  r->r2_c = 1.0 - g * p * (2.0 * r->beta * dbeta * r->b + r->beta * r->beta * r->db_c);
+  r->b    = 1.0 / (1.0 + K * beta * beta * g);
+  r->db_g = -K * beta * beta * r->b * r->b;
+  r->db_c = -2.0 * K * g * beta * dbeta * r->b * r->b;
+  r->r1_g = 2.0 * r->a * r->da * q * q + 2.0 * beta * beta * r->b * r->db_g * p * p;
+  r->r1_c = 2.0 * beta * dbeta * r->b * r->b * p * p + 2.0 * beta * beta * r->b * r->db_c * p * p;
+  r->r2_g = -beta * beta * p * (r->b + g * r->db_g);
+  r->r2_c = 1.0 - g * p * (2.0 * beta * dbeta * r->b + beta * beta * r->db_c);
   r->r1_q = 2.0 * r->a * r->a * q;
-  r->r1_p = 2.0 * r->beta * r->beta * r->b * r->b * p;
-  r->r2_p = -g * r->beta * r->beta * r->b;
-  return PETSC_TRUE;
+  r->r1_p = 2.0 * beta * beta * r->b * r->b * p;
+  r->r2_p = -g * beta * beta * r->b;
 }
 
 /* The return as one equation in the pressure's relative drop d = (p_tr - p) / p_tr, which fixes everything else:
@@ -132,7 +126,7 @@ IndPlasticStatus IndDensifyingUpdate(const IndPlasticParams *m, const PetscReal 
   const PetscReal       c_old = -(o.eps_p[0] + o.eps_p[1] + o.eps_p[2]);
   PetscReal             ee[6], s[6], tr, p_tr, nrm2 = 0.0, q_tr, a = 1.0, b = 1.0, aq = 0, ap = 0, bq = 0, bp = 0;
   PetscReal             dp = 0.0;
-  Ret                   r;
+  Partials              r;
 
   for (int i = 0; i < 6; ++i) ee[i] = eps[i] - o.eps_p[i];
   tr   = ee[0] + ee[1] + ee[2];
@@ -150,10 +144,11 @@ IndPlasticStatus IndDensifyingUpdate(const IndPlasticParams *m, const PetscReal 
     if (f_tr > 1e-12 * m->R0) {
       PetscReal g, c, det, gq, gp, cq, cp, dtr, dev2 = 0.0;
 
-      if (SolveReturn(m, q_tr, p_tr, c_old, &g, &c) != IND_PLASTIC_OK || !Evaluate(m, q_tr, p_tr, c_old, g, c, &r)) {
+      if (SolveReturn(m, q_tr, p_tr, c_old, &g, &c) != IND_PLASTIC_OK) {
         Fail(sigma, D, dp_out);
         return IND_PLASTIC_NOT_CONVERGED;
       }
+      EvaluatePartials(m, q_tr, p_tr, g, c, &r);
       a   = r.a;
       b   = r.b;
       /* d(g, c) / d(q_tr, p_tr) = -(dr/dx)^-1 dr/dy, with r2_q = 0 */
