@@ -244,7 +244,7 @@ class Fit:
         r = np.concatenate(parts)
         self.evals[key] = (r, recs, sims)
         if kind != "fd":
-            self.record(u, r, kind)
+            self.record(u, r, kind, failed=sum(rec["returncode"] != 0 for rec in recs))
         return r
 
     def groups(self):
@@ -268,7 +268,7 @@ class Fit:
             # RuntimeError: matplotlib's search of a top surface whose deformed triangles overlap
             raise FitError(f"the top surface of {rec['dir']} cannot be read: {e}") from None
 
-    def record(self, u, r, kind):
+    def record(self, u, r, kind, failed=0):
         m = misfit.rms(r, self.w2)
         if self.best is None or m < self.best[0]:
             self.best = (m, np.array(u, float))
@@ -277,7 +277,9 @@ class Fit:
         running, queued = self.runner.pending()
         cnt = self.runner.counts
         vals = " ".join(f"{p.name}={v:.5g}" for p, v in zip(self.params, x))
-        self.say(f"fit: {kind} {len(self.history):3d}  misfit {100 * m:.4g}% (best {100 * self.best[0]:.4g}%)  "
+        # a failed run's curve counts as zero load: say so rather than show that misfit as the model's
+        what = f"{failed} forward run(s) failed, counted as zero load" if failed else f"misfit {100 * m:.4g}%"
+        self.say(f"fit: {kind} {len(self.history):3d}  {what} (best {100 * self.best[0]:.4g}%)  "
                  f"{vals}  runs: {cnt['run']} run, {cnt['cached']} cached, {running} running, {queued} queued  "
                  f"[{time.time() - self.t0:.0f} s]")
 
