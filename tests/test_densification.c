@@ -8,13 +8,7 @@
 #include "ind_densification.h"
 #include "ind_hardening.h"
 #include "ind_elasticity.h"
-
-#define CHECK_TOL(name, worst, tol) \
-  do { \
-    PetscCall(PetscPrintf(PETSC_COMM_SELF, "  %-58s worst %.2e (tol %.0e)\n", name, (double)(worst), (double)(tol))); \
-    PetscCheck((worst) <= (tol), PETSC_COMM_SELF, PETSC_ERR_PLIB, "%s: worst error %g exceeds %g", name, \
-      (double)(worst), (double)(tol)); \
-  } while (0)
+#include "kernel_tests.h"
 
 /* fused silica's elastic constants; sigma_s and p_c of the order the fits give */
 static IndPlasticParams Params(PetscReal sy, PetscReal pc, PetscReal Hv)
@@ -160,16 +154,7 @@ static PetscErrorCode TestTangent(const char *name, const IndPlasticParams *m, i
     }
     for (int i = 0; i < 6; ++i) emax = PetscMax(emax, PetscAbsReal(eps[i]));
     h = 1e-7 * emax;
-    for (int b = 0; b < 6; ++b) {
-      PetscReal ep[6], em[6], sp[6], sm[6], dpp, dpm;
-      for (int i = 0; i < 6; ++i) ep[i] = em[i] = eps[i];
-      ep[b] += h;
-      em[b] -= h;
-      PetscCall(Update(m, ep, &old, &st, sp, NULL, &dpp));
-      PetscCall(Update(m, em, &old, &st, sm, NULL, &dpm));
-      if ((dpp > 0) != (dp > 0) || (dpm > 0) != (dp > 0)) kink = PETSC_TRUE;
-      for (int i = 0; i < 6; ++i) Dfd[6 * i + b] = (sp[i] - sm[i]) / (2.0 * h);
-    }
+    PetscCall(CentralDifferenceTangent(IndDensifyingUpdate, m, &old, eps, h, (PetscBool)(dp > 0), Dfd, &kink));
     for (int i = 0; i < 36; ++i) dmax = PetscMax(dmax, PetscAbsReal(D[i]));
     for (int i = 0; i < 6; ++i)
       for (int j = 0; j < 6; ++j) asym = PetscMax(asym, PetscAbsReal(D[6 * i + j] - D[6 * j + i]) / dmax);

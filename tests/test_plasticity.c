@@ -5,13 +5,7 @@
 #include <string.h>
 #include "ind_plasticity.h"
 #include "ind_hardening.h"
-
-#define CHECK_TOL(name, worst, tol) \
-  do { \
-    PetscCall(PetscPrintf(PETSC_COMM_SELF, "  %-58s worst %.2e (tol %.0e)\n", name, (double)(worst), (double)(tol))); \
-    PetscCheck((worst) <= (tol), PETSC_COMM_SELF, PETSC_ERR_PLIB, "%s: worst error %g exceeds %g", name, \
-      (double)(worst), (double)(tol)); \
-  } while (0)
+#include "kernel_tests.h"
 
 /* E = 70 GPa, nu = 0.3 throughout. */
 static const PetscReal YOUNG = 70.0, POISSON = 0.3;
@@ -311,18 +305,7 @@ static PetscErrorCode TestTangent(const char *name, const IndPlasticParams *m, i
     }
     for (int i = 0; i < 6; ++i) emax = PetscMax(emax, PetscAbsReal(eps[i]));
     h = 1e-7 * PetscMax(emax, m->R0 / (2.0 * m->mu));
-    for (int b = 0; b < 6; ++b) {
-      PetscReal ep[6], em[6], sp[6], sm[6], dpp, dpm;
-
-      for (int i = 0; i < 6; ++i) ep[i] = em[i] = eps[i];
-      ep[b] += h;
-      em[b] -= h;
-      PetscCall(Update(m, ep, &old, &st, sp, NULL, &dpp));
-      PetscCall(Update(m, em, &old, &st, sm, NULL, &dpm));
-      /* the stencil straddles the elastic/plastic kink: no derivative to compare with */
-      if ((dpp > 0) != (dp > 0) || (dpm > 0) != (dp > 0)) kink = PETSC_TRUE;
-      for (int i = 0; i < 6; ++i) Dfd[6 * i + b] = (sp[i] - sm[i]) / (2.0 * h);
-    }
+    PetscCall(CentralDifferenceTangent(IndPlasticUpdate, m, &old, eps, h, (PetscBool)(dp > 0), Dfd, &kink));
     if (kink) {
       ++*skipped;
       continue;

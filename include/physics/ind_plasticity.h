@@ -60,6 +60,10 @@ typedef enum { IND_PLASTIC_OK, IND_PLASTIC_NOT_CONVERGED } IndPlasticStatus;
 PetscReal IndPlasticR(const IndPlasticParams *m, PetscReal p);
 PetscReal IndPlasticdR(const IndPlasticParams *m, PetscReal p);
 
+/* The checks every plastic model shares: elastic moduli > 0 and, unless elastic_only, the return's iteration
+   cap >= 0; prefix as below. */
+PetscErrorCode IndPlasticCommonCheck(const IndPlasticParams *m, const char prefix[], MPI_Comm comm);
+
 /* Rejects non-physical parameters; prefix is the region's option prefix ("film_") used to name the
    offending option in the message. Plastic parameters are not checked when elastic_only is set. */
 PetscErrorCode IndPlasticParamsCheck(const IndPlasticParams *m, const char prefix[], MPI_Comm comm);

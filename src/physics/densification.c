@@ -11,16 +11,12 @@ PetscErrorCode IndDensifyingParamsCheck(const IndPlasticParams *m, const char pr
   const char *pre = prefix ? prefix : "";
 
   PetscFunctionBeginUser;
-  PetscCheck(m->mu > 0 && m->kappa > 0, comm, PETSC_ERR_ARG_OUTOFRANGE,
-    "Elastic moduli must be > 0, got mu = %g, kappa = %g GPa: check -%syoung and -%spoisson", (double)m->mu,
-    (double)m->kappa, pre, pre);
+  PetscCall(IndPlasticCommonCheck(m, prefix, comm));
   PetscCheck(m->R0 > 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-%syield must be > 0 (GPa), got %g", pre, (double)m->R0);
   PetscCheck(m->yield_pressure > 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-%syield_pressure must be > 0 (GPa), got %g", pre,
     (double)m->yield_pressure);
   PetscCheck(m->densification_modulus >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE,
     "-%sdensification_modulus must be >= 0 (GPa), got %g", pre, (double)m->densification_modulus);
-  PetscCheck(m->max_iterations >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE,
-    "-%sreturn_max_it must be >= 0 (0: the default, 100), got %" PetscInt_FMT, pre, m->max_iterations);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

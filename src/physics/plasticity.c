@@ -11,7 +11,7 @@ PetscReal IndPlasticdR(const IndPlasticParams *m, PetscReal p)
   return m->law->dR(m, p);
 }
 
-PetscErrorCode IndPlasticParamsCheck(const IndPlasticParams *m, const char prefix[], MPI_Comm comm)
+PetscErrorCode IndPlasticCommonCheck(const IndPlasticParams *m, const char prefix[], MPI_Comm comm)
 {
   const char *pre = prefix ? prefix : "";
 
@@ -20,10 +20,20 @@ PetscErrorCode IndPlasticParamsCheck(const IndPlasticParams *m, const char prefi
     "Elastic moduli must be > 0, got mu = %g, kappa = %g GPa: check -%syoung and -%spoisson", (double)m->mu,
     (double)m->kappa, pre, pre);
   if (m->elastic_only) PetscFunctionReturn(PETSC_SUCCESS);
-
-  PetscCheck(m->H >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-%skinematic must be >= 0 (GPa), got %g", pre, (double)m->H);
   PetscCheck(m->max_iterations >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE,
     "-%sreturn_max_it must be >= 0 (0: the default, 100), got %" PetscInt_FMT, pre, m->max_iterations);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode IndPlasticParamsCheck(const IndPlasticParams *m, const char prefix[], MPI_Comm comm)
+{
+  const char *pre = prefix ? prefix : "";
+
+  PetscFunctionBeginUser;
+  PetscCall(IndPlasticCommonCheck(m, prefix, comm));
+  if (m->elastic_only) PetscFunctionReturn(PETSC_SUCCESS);
+
+  PetscCheck(m->H >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-%skinematic must be >= 0 (GPa), got %g", pre, (double)m->H);
   PetscCheck(m->law, comm, PETSC_ERR_ARG_WRONGSTATE, "No hardening law for region prefix '%s'", pre);
   PetscCall(m->law->check(m, pre, comm));
   /* a law that derives R0 from its own parameters has checked them: this names -yield for the others */
