@@ -129,6 +129,18 @@ indent_script_test(restart_axisymmetric_np2_to_1 ${RUN_RESTART} --workdir ${CMAK
   -mesh_geo_parameters h_tip=40,h_far=400,r_fine=200 -load_depth 20 -load_steps 5 -load_unload_steps 10 -quiet
   -film_yield 0.3)
 set_tests_properties(restart_axisymmetric_np2_to_1 PROPERTIES PROCESSORS 2)
+# The densifying glass (its history holds a plastic strain with a trace) stopped and continued the same way: the
+# curve and every field, the compaction among them, as uninterrupted (measured: 1e-15); a changed yield pressure
+# is refused.
+indent_script_test(restart_densifying_np2_to_1 ${RUN_RESTART} --workdir ${CMAKE_CURRENT_BINARY_DIR}/restart_densifying
+  --np 2,1 --stop 3 --rtol 1e-10 --changed-option=-domain_yield_pressure=9
+  --mesh-change=-mesh_geo_parameters=width=2000,depth=2000,h_tip=25,h_far=200,r_fine=200
+  -- -mesh_file ${CMAKE_SOURCE_DIR}/inputs/axisymmetric_block.geo
+  -mesh_geo_parameters width=2000,depth=2000,h_tip=20,h_far=200,r_fine=200 -domain_young 70 -domain_poisson 0.17
+  -domain_model densifying -domain_yield 6 -domain_yield_pressure 8 -domain_densification_modulus 20 -bc_fixed bottom
+  -indenter_type cone -indenter_radius 10 -contact_friction 0.1 -load_depth 20 -load_steps 5 -load_unload_steps 10
+  -quiet)
+set_tests_properties(restart_densifying_np2_to_1 PROPERTIES PROCESSORS 2)
 
 # Bad input: what a section cannot represent is refused in one line that names the way out.
 set(TEST_LABEL "input;faults")
