@@ -260,3 +260,10 @@ foreach(np 1 2)
     -mesh_geo_parameters h_tip=40,h_far=400,r_fine=200
     -output_fields 0 -quiet -output_dir ${CMAKE_CURRENT_BINARY_DIR}/held_lu_np${np} -output_overwrite)
 endforeach()
+
+# The fit's model files (inputs/fit-*.opts, section and 3D) each start a run: mesh, options, two steps on 2 ranks.
+indent_script_test(inputs_fit_models_start_np2 ${CMAKE_CURRENT_SOURCE_DIR}/check_inputs_start.sh ${MPIEXEC_EXECUTABLE}
+  $<TARGET_FILE:indent> ${CMAKE_CURRENT_BINARY_DIR}/inputs_start ${CMAKE_SOURCE_DIR}/inputs/fit-cone.opts
+  ${CMAKE_SOURCE_DIR}/inputs/fit-sphere.opts ${CMAKE_SOURCE_DIR}/inputs/fit-fused-silica.opts
+  ${CMAKE_SOURCE_DIR}/inputs/fit-fused-silica-densifying.opts ${CMAKE_SOURCE_DIR}/inputs/fit-fused-silica-cone.opts)
+set_tests_properties(inputs_fit_models_start_np2 PROPERTIES PROCESSORS 2 WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
