@@ -144,19 +144,23 @@ IndPlasticStatus IndDensifyingUpdate(const IndPlasticParams *m, const PetscReal 
         Fail(sigma, D, dp_out);
         return IND_PLASTIC_NOT_CONVERGED;
       }
-      EvaluatePartials(m, q_tr, p_tr, g, c, &r);
-      a   = r.a;
-      b   = r.b;
-      /* d(g, c) / d(q_tr, p_tr) = -(dr/dx)^-1 dr/dy, with r2_q = 0 */
-      det = r.r1_g * r.r2_c - r.r1_c * r.r2_g;
-      gq  = -r.r2_c * r.r1_q / det;
-      gp  = -(r.r2_c * r.r1_p - r.r1_c * r.r2_p) / det;
-      cq  = r.r2_g * r.r1_q / det;
-      cp  = -(-r.r2_g * r.r1_p + r.r1_g * r.r2_p) / det;
-      aq  = r.da * gq;
-      ap  = r.da * gp;
-      bq  = r.db_g * gq + r.db_c * cq;
-      bp  = r.db_g * gp + r.db_c * cp;
+      if (D) { /* the tangent's derivatives, d(g, c) / d(q_tr, p_tr) = -(dr/dx)^-1 dr/dy with r2_q = 0 */
+        EvaluatePartials(m, q_tr, p_tr, g, c, &r);
+        det = r.r1_g * r.r2_c - r.r1_c * r.r2_g;
+        gq  = -r.r2_c * r.r1_q / det;
+        gp  = -(r.r2_c * r.r1_p - r.r1_c * r.r2_p) / det;
+        cq  = r.r2_g * r.r1_q / det;
+        cp  = -(-r.r2_g * r.r1_p + r.r1_g * r.r2_p) / det;
+        aq  = r.da * gq;
+        ap  = r.da * gp;
+        bq  = r.db_g * gq + r.db_c * cq;
+        bp  = r.db_g * gp + r.db_c * cp;
+      }
+      {
+        const PetscReal beta = m->R0 / IndDensifyingYieldPressure(m, c);
+        a = 1.0 / (1.0 + 3.0 * G * g);
+        b = 1.0 / (1.0 + K * beta * beta * g);
+      }
       /* the plastic strain increment: (1 - a) s_tr / 2 mu deviatoric, and its trace (p - p_tr) / kappa */
       dtr = (b - 1.0) * p_tr / K;
       for (int i = 0; i < 6; ++i) {
