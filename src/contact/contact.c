@@ -859,7 +859,7 @@ PetscErrorCode IndContactNodalFields(IndContact c, Vec G)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode IndContactUnloadingRows(IndContact c, Vec X, PetscInt *n, PetscInt rows[])
+PetscErrorCode IndContactUnloadingRows(IndContact c, PetscBool stick_all, Vec X, PetscInt *n, PetscInt rows[])
 {
   PetscScalar *x;
 
@@ -868,7 +868,7 @@ PetscErrorCode IndContactUnloadingRows(IndContact c, Vec X, PetscInt *n, PetscIn
   for (PetscInt i = 0; i < c->n; ++i) {
     if (c->status[i] == IND_CONTACT_OPEN) continue;
     for (int d = 0; d < 3; ++d) {
-      if (c->fixed[i] & (1 << d) || (d < 2 && c->status[i] == IND_CONTACT_SLIP)) continue;
+      if (c->fixed[i] & (1 << d) || (d < 2 && (stick_all ? c->mu == 0 : c->status[i] == IND_CONTACT_SLIP))) continue;
       rows[(*n)++]     = c->grow[i] + d;
       x[c->row[i] + d] = d == 2 ? 1.0 : 0.0;
     }

@@ -342,14 +342,11 @@ PetscErrorCode IndAssemblyCountInverted(IndAssembly a, Vec Uloc, PetscInt *ncell
 PetscErrorCode IndAssemblyElasticJacobian(IndAssembly a, Vec Uloc, Mat K)
 {
   const IndTangent tangent = a->tangent;
-  IndMatInsert     insert  = a->insert;
 
   PetscFunctionBeginUser;
   a->tangent = IND_TANGENT_ELASTIC;
-  a->insert  = NULL;
   PetscCall(IndAssemblyJacobian(a, Uloc, K));
   a->tangent = tangent;
-  a->insert  = insert;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -46,6 +46,14 @@ PetscErrorCode IndPredictorDestroy(IndPredictor *p)
    reversed (that guess made Newton diverge 9 times in a row on a Vickers indentation). Under load control the
    depth drives the step: the increment is scaled by the change of depth. A slide drives it in a scratch: the
    last slide's increment, scaled (at its start, the accepted state). */
+static PetscErrorCode Tangent(IndSolver s, const IndPredictorStep *st, Vec U)
+{
+  PetscFunctionBeginUser;
+  PetscCall(IndSolverPredict(s, st->lambda_old, st->lambda, U));
+  if (st->depth < st->depth_old) PetscCall(IndSolverPredictUnloading(s, st->depth_old - st->depth, U));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode IndPredictorApply(IndPredictor p, IndSolver s, const IndPredictorStep *st, Vec U)
 {
   const PetscBool extrapolate = p->type == IND_PREDICTOR_EXTRAPOLATE ? PETSC_TRUE : PETSC_FALSE;
@@ -57,10 +65,10 @@ PetscErrorCode IndPredictorApply(IndPredictor p, IndSolver s, const IndPredictor
   } else if (st->by_depth) {
     const PetscReal ratio = p->ddepth != 0 ? (st->depth - st->depth_old) / p->ddepth : 0;
     if (extrapolate && ratio > 0) PetscCall(VecAXPY(U, ratio, p->dU));
-    else if (tangent) PetscCall(IndSolverPredict(s, st->lambda_old, st->lambda, U));
+    else if (tangent) PetscCall(Tangent(s, st, U));
   } else if (extrapolate && (st->lambda - st->lambda_old) * p->dlambda > 0)
     PetscCall(VecAXPY(U, (st->lambda - st->lambda_old) / p->dlambda, p->dU));
-  else if (tangent) PetscCall(IndSolverPredict(s, st->lambda_old, st->lambda, U));
+  else if (tangent) PetscCall(Tangent(s, st, U));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

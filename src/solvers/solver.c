@@ -388,6 +388,49 @@ PetscErrorCode IndSolverPredict(IndSolver s, PetscReal t_old, PetscReal t_new, V
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+PetscErrorCode IndSolverPredictUnloading(IndSolver s, PetscReal rise, Vec U)
+{
+  KSP                ksp;
+  Vec                X, B, du;
+  KSPConvergedReason reason;
+  PetscInt           n = 0, nbc, *rows;
+  const PetscInt    *bcrows;
+  PetscBool          ew;
+
+  PetscFunctionBeginUser;
+  if (!s->contact || rise <= 0) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(IndBCSetUp(s->bc));
+  PetscCall(DMGetGlobalVector(s->dm, &X));
+  PetscCall(DMGetGlobalVector(s->dm, &B));
+  PetscCall(DMGetGlobalVector(s->dm, &du));
+  PetscCall(VecZeroEntries(X));
+  PetscCall(VecZeroEntries(B));
+  PetscCall(IndBCGetRows(s->bc, &nbc, &bcrows, NULL));
+  PetscCall(PetscMalloc1(nbc + 3 * IndContactGetSize(s->contact) + 1, &rows));
+  for (PetscInt i = 0; i < nbc; ++i) rows[n++] = bcrows[i];
+  PetscCall(IndContactUnloadingRows(s->contact, PETSC_TRUE, X, &n, rows));
+  PetscCall(VecScale(X, rise));
+  /* The elastic tangent at the accepted state, assembled into the Jacobian (the first Newton iteration assembles
+     it again), held where the indenter and the conditions hold the body. */
+  PetscCall(DMGlobalToLocal(s->dm, U, INSERT_VALUES, s->Uloc));
+  PetscCall(IndAssemblyElasticJacobian(s->assembly, s->Uloc, s->J));
+  PetscCall(MatZeroRowsColumns(s->J, n, rows, 1.0, X, B));
+  PetscCall(PetscFree(rows));
+  PetscCall(SNESGetKSP(s->snes, &ksp));
+  PetscCall(KSPSetOperators(ksp, s->J, s->J));
+  PetscCall(SNESKSPGetUseEW(s->snes, &ew));
+  PetscCall(SNESKSPSetUseEW(s->snes, PETSC_FALSE));
+  PetscCall(VecZeroEntries(du));
+  PetscCall(KSPSolve(ksp, B, du));
+  PetscCall(SNESKSPSetUseEW(s->snes, ew));
+  PetscCall(KSPGetConvergedReason(ksp, &reason));
+  if (reason > 0) PetscCall(VecAXPY(U, 1.0, du));
+  PetscCall(DMRestoreGlobalVector(s->dm, &X));
+  PetscCall(DMRestoreGlobalVector(s->dm, &B));
+  PetscCall(DMRestoreGlobalVector(s->dm, &du));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode IndSolverSetLoadControl(IndSolver s, PetscReal depth_max, PetscReal load_tol)
 {
   SNESLineSearch ls;
