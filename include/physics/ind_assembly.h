@@ -60,7 +60,7 @@ PetscErrorCode IndAssemblyResidual(IndAssembly assembly, Vec Uloc, Vec Floc);
 PetscErrorCode IndAssemblyCommit(IndAssembly assembly, Vec Uloc);
 PetscErrorCode IndAssemblyJacobian(IndAssembly assembly, Vec Uloc, Mat J);
 /* The Jacobian with the elastic tangent at every point (an elastic unloading from the current state), into any
-   matrix of J's layout (MatSetValues, not J's cached positions). */
+   matrix of J's layout (J itself at its cached positions, any other with MatSetValues). */
 PetscErrorCode IndAssemblyElasticJacobian(IndAssembly assembly, Vec Uloc, Mat K);
 PetscErrorCode IndAssemblyCellAverages(IndAssembly assembly, Vec Uloc, IndCellFields *fields);
 /* Local cells whose deformation gradient F = I + grad u has det F <= 0 at a quadrature point (inverted
