@@ -302,6 +302,15 @@ class Fit:
         return np.column_stack(cols)
 
     def start(self):
+        """The optimiser's first point, evaluated: a start whose every forward run failed is an error, whatever
+        chose it (the optimiser would read the zero loads' flat misfit as converged)."""
+        u0 = self.first_point()
+        self.fun(u0)
+        if all(rec["returncode"] for rec in self.evals[tuple(np.round(u0, 12))][1]):
+            raise FitError(self.failed_line(u0))
+        return u0
+
+    def first_point(self):
         p = len(self.params)
         if self.args.start == "dao":
             return self.dao_start()
@@ -322,10 +331,7 @@ class Fit:
         for u in pts:
             self.submit(u)
         res = [(misfit.rms(self.residual(u, "sweep"), self.w2), k) for k, u in enumerate(pts)]
-        best = min(res)[1]
-        if all(all(rec["returncode"] for rec in self.evals[tuple(np.round(u, 12))][1]) for u in pts):
-            raise FitError(self.failed_line(pts[0]))
-        return pts[best]
+        return pts[min(res)[1]]
 
     def dao_start(self):
         """E from the first curve's Oliver-Pharr modulus, yield from Dao's Pi_1 and the middle of n's bounds."""
