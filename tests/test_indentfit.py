@@ -1,9 +1,11 @@
 #!/usr/bin/env python3
 """Unit tests of scripts/indentfit (the inverse fit's decisions) on small closed-form cases."""
 import os
+import shutil
 import sys
 import tempfile
 import unittest
+import unittest.mock
 
 import numpy as np
 
@@ -188,6 +190,33 @@ class Cache(unittest.TestCase):
         self.assertNotEqual(k, runs.run_key("-a 2\n", ["-x", "1"]))
         self.assertNotEqual(k, runs.run_key("-a 1\n", ["-x", "1.0"]))
         self.assertNotEqual(runs.run_key("", ["-x", "1", "-y"]), runs.run_key("", ["-x", "1 -y"]))
+
+
+    def test_runs_at_once_not_bound_to_one_core(self):
+        """Two 1-rank runs at once through mpiexec: each may use every core this test may (Open MPI bound both to
+        core 0, and each took twice as long)."""
+        cores = len(os.sched_getaffinity(0))
+        mpiexec = shutil.which("mpiexec")
+        if cores < 2 or not mpiexec:
+            self.skipTest("needs mpiexec and two cores")
+        with tempfile.TemporaryDirectory() as d:
+            fake = os.path.join(d, "indent")   # writes the cores it may run on into its -output_dir
+            with open(fake, "w") as f:
+                f.write(f"#!{sys.executable}\nimport os, sys\nout = sys.argv[sys.argv.index('-output_dir') + 1]\n"
+                        "open(os.path.join(out, 'cores'), 'w').write(str(len(os.sched_getaffinity(0))))\n")
+            os.chmod(fake, 0o755)
+            model = os.path.join(d, "model.opts")
+            with open(model, "w") as f:
+                f.write("-x 1\n")
+            runner = runs.Runner(os.path.join(d, "runs"), fake, f"{mpiexec} -n {{np}}", 1, 2, log=lambda s: None)
+            env = {k: v for k, v in os.environ.items() if k != "OMPI_MCA_hwloc_base_binding_policy"}
+            with unittest.mock.patch.dict(os.environ, env, clear=True):   # as if mpi-env.sh had not set it
+                recs = [f.result() for f in [runner.submit(model, "-x 1\n", ["-y", str(k)]) for k in range(2)]]
+            runner.shutdown()
+            for rec in recs:
+                self.assertEqual(rec["returncode"], 0)
+                with open(os.path.join(rec["dir"], "cores")) as f:
+                    self.assertEqual(int(f.read()), cores)
 
 
 def bowl(x, y, depth=20.0, radius=100.0):

@@ -88,10 +88,14 @@ PetscErrorCode IndContactSetIndenterPosition(IndContact contact, PetscReal depth
 int            IndContactPlaneThroughAxis(const IndBCSpec *spec, const IndIndenter *ind);
 PetscErrorCode IndContactCommit(IndContact contact, Vec U);
 /* An elastic unloading by 1 nm from the last update's state: the global rows the indenter holds (a sticking node
-   moves with it, a slipping one only follows it vertically; with stick_all every node in contact moves with it
-   when there is friction; not the components of boundary conditions), appended to rows[*n...] (room for 3 per owned contact node:
-   IndContactGetSize), and X set to the indenter's motion there (1 in z). */
-PetscErrorCode IndContactUnloadingRows(IndContact contact, PetscBool stick_all, Vec X, PetscInt *n, PetscInt rows[]);
+   moves with it, a slipping one only follows it vertically; not the components of boundary conditions), appended
+   to rows[*n...] (room for 3 per owned contact node: IndContactGetSize), and X set to the indenter's motion
+   there (1 in z). */
+PetscErrorCode IndContactUnloadingRows(IndContact contact, Vec X, PetscInt *n, PetscInt rows[]);
+/* The same as the indenter starts to rise from the committed state: every node carrying a committed reaction moves
+   with it, wholly with friction (sliding turns to sticking as the load falls), vertically without. The committed
+   reactions are part of the state, so a continued run holds the rows the uninterrupted one held. */
+PetscErrorCode IndContactReversalRows(IndContact contact, Vec X, PetscInt *n, PetscInt rows[]);
 /* The z force of F (global) on the nodes in contact at the last update, all ranks, times the symmetry factor. */
 PetscErrorCode IndContactActiveForce(IndContact contact, Vec F, PetscReal *Fz);
 MPI_Comm       IndContactGetComm(IndContact contact);

@@ -18,6 +18,15 @@ LOG = "fit-run.log"
 INTERRUPTED = (75, 130, 143, -2, -9, -15)   # stopped by a signal: run again, never cached as a failure
 
 
+def child_env():
+    """The runs' environment. Open MPI binds a job of one or two ranks to cores counted from core 0, every mpiexec
+    alike: runs at once would share core 0 (two 1-rank runs took twice as long each). Unbound, the scheduler
+    spreads them; a launcher that places ranks itself (srun) ignores this, and a user's own setting is kept."""
+    env = dict(os.environ)
+    env.setdefault("OMPI_MCA_hwloc_base_binding_policy", "none")
+    return env
+
+
 class Stopped(Exception):
     """The fit was told to stop (SIGTERM, SIGINT): runs in progress were ended."""
 
@@ -55,7 +64,7 @@ class Runner:
         with open(os.path.join(d, LOG), "a") as log:
             log.write(" ".join(shlex.quote(c) for c in cmd) + "\n")
             log.flush()
-            proc = subprocess.Popen(cmd, stdout=log, stderr=subprocess.STDOUT, start_new_session=True)
+            proc = subprocess.Popen(cmd, stdout=log, stderr=subprocess.STDOUT, start_new_session=True, env=child_env())
             with self.lock:
                 self.procs.add(proc)
             rc = proc.wait()

@@ -26,7 +26,7 @@ PetscErrorCode IndCSMStiffness(IndSolver solver, IndBC bc, IndContact c, const I
   PetscCall(IndBCGetRows(bc, &nbc, &bcrows, NULL));
   PetscCall(PetscMalloc1(nbc + 3 * IndContactGetSize(c) + 1, &rows));
   for (PetscInt i = 0; i < nbc; ++i) rows[n++] = bcrows[i];
-  PetscCall(IndContactUnloadingRows(c, PETSC_FALSE, X, &n, rows));
+  PetscCall(IndContactUnloadingRows(c, X, &n, rows));
   PetscCall(MatZeroRowsColumns(K, n, rows, 1.0, X, B));
   PetscCall(PetscFree(rows));
 

@@ -859,21 +859,41 @@ PetscErrorCode IndContactNodalFields(IndContact c, Vec G)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode IndContactUnloadingRows(IndContact c, PetscBool stick_all, Vec X, PetscInt *n, PetscInt rows[])
+/* The rows of the nodes the indenter holds as it rises, from the last update's status (a sticking node wholly, a
+   slipping one vertically) or, with committed, from the committed reactions (every node that carries one, wholly
+   with friction, vertically without). */
+static PetscErrorCode HeldRows(IndContact c, PetscBool committed, Vec X, PetscInt *n, PetscInt rows[])
 {
   PetscScalar *x;
 
   PetscFunctionBeginUser;
   PetscCall(VecGetArray(X, &x));
   for (PetscInt i = 0; i < c->n; ++i) {
-    if (c->status[i] == IND_CONTACT_OPEN) continue;
+    const PetscReal *r        = c->Rc + 3 * i;
+    const PetscBool  touching = committed ? r[0] != 0 || r[1] != 0 || r[2] != 0 : c->status[i] != IND_CONTACT_OPEN;
+    const PetscBool  wholly   = committed ? c->mu > 0 : c->status[i] == IND_CONTACT_STICK;
+    if (!touching) continue;
     for (int d = 0; d < 3; ++d) {
-      if (c->fixed[i] & (1 << d) || (d < 2 && (stick_all ? c->mu == 0 : c->status[i] == IND_CONTACT_SLIP))) continue;
+      if (c->fixed[i] & (1 << d) || (d < 2 && !wholly)) continue;
       rows[(*n)++]     = c->grow[i] + d;
       x[c->row[i] + d] = d == 2 ? 1.0 : 0.0;
     }
   }
   PetscCall(VecRestoreArray(X, &x));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode IndContactUnloadingRows(IndContact c, Vec X, PetscInt *n, PetscInt rows[])
+{
+  PetscFunctionBeginUser;
+  PetscCall(HeldRows(c, PETSC_FALSE, X, n, rows));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode IndContactReversalRows(IndContact c, Vec X, PetscInt *n, PetscInt rows[])
+{
+  PetscFunctionBeginUser;
+  PetscCall(HeldRows(c, PETSC_TRUE, X, n, rows));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -39,13 +39,8 @@ PetscErrorCode IndPredictorDestroy(IndPredictor *p)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* The prescribed values alone would strain only the boundary layer of cells, which then yields in the first
-   iterate and sends Newton astray; either predictor starts it near the answer. The last increment is scaled by
-   the change of load factor; a hold or a reversal takes the tangent response instead (for an indenter alone,
-   the last state). Not across a reversal: unloading from a plastic state is nothing like the loading increment
-   reversed (that guess made Newton diverge 9 times in a row on a Vickers indentation). Under load control the
-   depth drives the step: the increment is scaled by the change of depth. A slide drives it in a scratch: the
-   last slide's increment, scaled (at its start, the accepted state). */
+/* The tangent response to the new prescribed values, and where the indenter rises the elastic unloading with the
+   nodes in contact rising with it. */
 static PetscErrorCode Tangent(IndSolver s, const IndPredictorStep *st, Vec U)
 {
   PetscFunctionBeginUser;
@@ -54,6 +49,14 @@ static PetscErrorCode Tangent(IndSolver s, const IndPredictorStep *st, Vec U)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The prescribed values alone would strain only the boundary layer of cells, which then yields in the first
+   iterate and sends Newton astray; either predictor starts it near the answer. The last increment is scaled by
+   the change of load factor; a hold or a reversal takes the tangent response instead (for an indenter alone,
+   the last state, moved by the elastic unloading where the indenter rises). Not across a reversal: unloading
+   from a plastic state is nothing like the loading increment reversed (that guess made Newton diverge 9 times
+   in a row on a Vickers indentation). Under load control the
+   depth drives the step: the increment is scaled by the change of depth. A slide drives it in a scratch: the
+   last slide's increment, scaled (at its start, the accepted state). */
 PetscErrorCode IndPredictorApply(IndPredictor p, IndSolver s, const IndPredictorStep *st, Vec U)
 {
   const PetscBool extrapolate = p->type == IND_PREDICTOR_EXTRAPOLATE ? PETSC_TRUE : PETSC_FALSE;

@@ -408,7 +408,7 @@ PetscErrorCode IndSolverPredictUnloading(IndSolver s, PetscReal rise, Vec U)
   PetscCall(IndBCGetRows(s->bc, &nbc, &bcrows, NULL));
   PetscCall(PetscMalloc1(nbc + 3 * IndContactGetSize(s->contact) + 1, &rows));
   for (PetscInt i = 0; i < nbc; ++i) rows[n++] = bcrows[i];
-  PetscCall(IndContactUnloadingRows(s->contact, PETSC_TRUE, X, &n, rows));
+  PetscCall(IndContactReversalRows(s->contact, X, &n, rows));
   PetscCall(VecScale(X, rise));
   /* The elastic tangent at the accepted state, assembled into the Jacobian (the first Newton iteration assembles
      it again), held where the indenter and the conditions hold the body. */
