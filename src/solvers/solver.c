@@ -337,13 +337,32 @@ PetscErrorCode IndSolverSolve(IndSolver s, PetscReal load_factor, Vec U, IndSolv
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode IndSolverPredict(IndSolver s, PetscReal t_old, PetscReal t_new, Vec U)
+/* Solves the predictor's system J du = b with the Newton iteration's solver and adds du to U. Eisenstat-Walker's
+   tolerance hook reads the SNES's residual, which does not exist before its first solve and is not this system's:
+   off for this solve. A failed solve only costs Newton iterations: U is left as it was. */
+static PetscErrorCode AddPredictorSolution(IndSolver s, Vec b, Vec du, Vec U)
 {
   KSP                ksp;
-  Vec                G, r, du;
   KSPConvergedReason reason;
-  PetscReal          gnorm;
   PetscBool          ew;
+
+  PetscFunctionBeginUser;
+  PetscCall(SNESGetKSP(s->snes, &ksp));
+  PetscCall(KSPSetOperators(ksp, s->J, s->J));
+  PetscCall(SNESKSPGetUseEW(s->snes, &ew));
+  PetscCall(SNESKSPSetUseEW(s->snes, PETSC_FALSE));
+  PetscCall(VecZeroEntries(du));
+  PetscCall(KSPSolve(ksp, b, du));
+  PetscCall(SNESKSPSetUseEW(s->snes, ew));
+  PetscCall(KSPGetConvergedReason(ksp, &reason));
+  if (reason > 0) PetscCall(VecAXPY(U, 1.0, du));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode IndSolverPredict(IndSolver s, PetscReal t_old, PetscReal t_new, Vec U)
+{
+  Vec       G, r, du;
+  PetscReal gnorm;
 
   PetscFunctionBeginUser;
   PetscCall(IndBCSetUp(s->bc));
@@ -370,17 +389,7 @@ PetscErrorCode IndSolverPredict(IndSolver s, PetscReal t_old, PetscReal t_new, V
   PetscCall(IndBCApplyJacobian(s->bc, s->J));
   PetscCall(IndBCApplySolution(s->bc, 0.0, r));
   PetscCall(VecScale(r, -1.0));
-  PetscCall(SNESGetKSP(s->snes, &ksp));
-  PetscCall(KSPSetOperators(ksp, s->J, s->J));
-  /* Eisenstat-Walker's tolerance hook reads the SNES's residual, which does not exist before its
-     first solve and is not this system's: off for this solve. */
-  PetscCall(SNESKSPGetUseEW(s->snes, &ew));
-  PetscCall(SNESKSPSetUseEW(s->snes, PETSC_FALSE));
-  PetscCall(KSPSolve(ksp, r, du));
-  PetscCall(SNESKSPSetUseEW(s->snes, ew));
-  PetscCall(KSPGetConvergedReason(ksp, &reason));
-  /* A failed predictor only costs Newton iterations: fall back to the prescribed values alone. */
-  if (reason > 0) PetscCall(VecAXPY(U, 1.0, du));
+  PetscCall(AddPredictorSolution(s, r, du, U));
   PetscCall(VecAXPY(U, 1.0, G));
   PetscCall(DMRestoreGlobalVector(s->dm, &G));
   PetscCall(DMRestoreGlobalVector(s->dm, &r));
@@ -390,12 +399,9 @@ PetscErrorCode IndSolverPredict(IndSolver s, PetscReal t_old, PetscReal t_new, V
 
 PetscErrorCode IndSolverPredictUnloading(IndSolver s, PetscReal rise, Vec U)
 {
-  KSP                ksp;
-  Vec                X, B, du;
-  KSPConvergedReason reason;
-  PetscInt           n = 0, nbc, *rows;
-  const PetscInt    *bcrows;
-  PetscBool          ew;
+  Vec             X, B, du;
+  PetscInt        n = 0, nbc, *rows;
+  const PetscInt *bcrows;
 
   PetscFunctionBeginUser;
   if (!s->contact || rise <= 0) PetscFunctionReturn(PETSC_SUCCESS);
@@ -416,15 +422,7 @@ PetscErrorCode IndSolverPredictUnloading(IndSolver s, PetscReal rise, Vec U)
   PetscCall(IndAssemblyElasticJacobian(s->assembly, s->Uloc, s->J));
   PetscCall(MatZeroRowsColumns(s->J, n, rows, 1.0, X, B));
   PetscCall(PetscFree(rows));
-  PetscCall(SNESGetKSP(s->snes, &ksp));
-  PetscCall(KSPSetOperators(ksp, s->J, s->J));
-  PetscCall(SNESKSPGetUseEW(s->snes, &ew));
-  PetscCall(SNESKSPSetUseEW(s->snes, PETSC_FALSE));
-  PetscCall(VecZeroEntries(du));
-  PetscCall(KSPSolve(ksp, B, du));
-  PetscCall(SNESKSPSetUseEW(s->snes, ew));
-  PetscCall(KSPGetConvergedReason(ksp, &reason));
-  if (reason > 0) PetscCall(VecAXPY(U, 1.0, du));
+  PetscCall(AddPredictorSolution(s, B, du, U));
   PetscCall(DMRestoreGlobalVector(s->dm, &X));
   PetscCall(DMRestoreGlobalVector(s->dm, &B));
   PetscCall(DMRestoreGlobalVector(s->dm, &du));
