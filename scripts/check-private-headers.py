@@ -19,7 +19,6 @@ WHITE_BOX = {
     "tests/test_bordered.c": {"solvers": "unit test of the bordered solve, a private object of the solvers"},
     "tests/test_matinsert.c": {"physics": "switches the assembly's cached insertion off to compare"},
     "tests/test_held_lu.c": {"solvers": "reads the size of the free block the section's direct solve factors"},
-    "tests/test_forcing.c": {"solvers": "unit test of the linear tolerance inside a Newton solve"},
     "tests/solver_anatomy.c": {"contact": "diagnostic that takes the Jacobian apart",
                                "solvers": "diagnostic that takes the Jacobian apart",
                                "physics": "diagnostic that takes the Jacobian apart"},

@@ -3,7 +3,6 @@
 #include "ind_options.h"
 #include "bordered.h"
 #include "heldlu.h"
-#include "forcing.h"
 
 /* The free rows see the prescribed values, not U's, on constrained dofs: the residual of a free row
    then does not depend on constrained entries of U, so the Jacobian with those rows and columns
@@ -130,9 +129,6 @@ static PetscErrorCode ConvergedUnlessStalled(SNES snes, PetscInt it, PetscReal x
   /* A load short of its tolerance is not converged, however small the step or the residual */
   if (s->border && *reason > 0 && !IndBorderedLoadMet(s->border)) *reason = SNES_CONVERGED_ITERATING;
   if (it == 0) {
-    PetscReal atol, rtol;
-    PetscCall(SNESGetTolerances(snes, &atol, &rtol, NULL, NULL, NULL));
-    s->ttol    = PetscMax(atol, rtol * fnorm);
     s->fmin    = fnorm;
     s->itmin   = 0;
     s->stalled = PETSC_FALSE;
@@ -144,40 +140,6 @@ static PetscErrorCode ConvergedUnlessStalled(SNES snes, PetscInt it, PetscReal x
     *reason    = SNES_DIVERGED_DTOL;
     s->stalled = PETSC_TRUE;
   }
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-/* Only the relative tolerance: PETSC_DEFAULT for the others resets them from PETSc 3.21 on (PETSC_CURRENT, which
-   keeps them, does not exist in 3.18). */
-static PetscErrorCode SetRelativeTolerance(KSP ksp, PetscReal rtol)
-{
-  PetscReal abstol, dtol;
-  PetscInt  maxits;
-
-  PetscFunctionBeginUser;
-  PetscCall(KSPGetTolerances(ksp, NULL, &abstol, &dtol, &maxits));
-  PetscCall(KSPSetTolerances(ksp, rtol, abstol, dtol, maxits));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-/* Before each Newton iteration: its linear solve's tolerance (src/solvers/forcing.c). Under load control the
-   bordered solve's second right-hand side and its load equation keep -ksp_rtol; with Eisenstat-Walker
-   (-snes_ksp_ew) SNES sets the tolerance itself. */
-static PetscErrorCode SetLinearTolerance(SNES snes, PetscInt it)
-{
-  IndSolver s;
-  KSP       ksp;
-  PetscReal fnorm;
-  PetscBool ew;
-
-  PetscFunctionBeginUser;
-  (void)it;
-  PetscCall(SNESGetApplicationContext(snes, &s));
-  PetscCall(SNESKSPGetUseEW(snes, &ew));
-  if (ew || s->border) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCall(SNESGetFunctionNorm(snes, &fnorm));
-  PetscCall(SNESGetKSP(snes, &ksp));
-  PetscCall(SetRelativeTolerance(ksp, IndForcingTerm(s->ksp_rtol, s->safeguard, s->ttol, fnorm)));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -283,27 +245,15 @@ PetscErrorCode IndSolverCreate(DM dm, IndAssembly assembly, IndBC bc, IndContact
     PetscCall(SNESLineSearchSetType(ls, SNESLINESEARCHBT));
   }
   s->stall_its = 10;
-  /* The Krylov methods measure the preconditioned residual. In the Kick test's second step GMRES reported a
-     reduction by 877 where the true residual fell by 86: a safeguard of 0.1 then missed the target and cost a Newton
-     iteration, 0.01 leaves that factor of 10. */
-  s->safeguard = 0.01;
   PetscOptionsBegin(PetscObjectComm((PetscObject)dm), NULL, IND_TITLE "Newton", "Solver");
   PetscCall(IndOptionsInt("-newton_stall_its",
     "Newton fails after this many iterations without a 1% smaller residual (0: never)",
                           NULL, s->stall_its, &s->stall_its, NULL));
-  PetscCall(IndOptionsReal("-newton_linear_safeguard", "Near the Newton target, a linear solve stops at this fraction of "
-    "the target residual where that is looser than -ksp_rtol (0: always -ksp_rtol)", "", NULL,
-    s->safeguard, &s->safeguard, NULL));
   PetscOptionsEnd();
   PetscCheck(s->stall_its >= 0, PetscObjectComm((PetscObject)dm), PETSC_ERR_ARG_OUTOFRANGE,
     "-newton_stall_its must be >= 0, got %" PetscInt_FMT, s->stall_its);
-  PetscCheck(s->safeguard >= 0 && s->safeguard < 1, PetscObjectComm((PetscObject)dm), PETSC_ERR_ARG_OUTOFRANGE,
-    "-newton_linear_safeguard must be in [0, 1), got %g", (double)s->safeguard);
   PetscCall(SNESSetConvergenceTest(s->snes, ConvergedUnlessStalled, s, NULL));
   PetscCall(SNESSetFromOptions(s->snes));
-  PetscCall(SNESSetApplicationContext(s->snes, s));
-  PetscCall(KSPGetTolerances(ksp, &s->ksp_rtol, NULL, NULL, NULL));
-  PetscCall(SNESSetUpdate(s->snes, SetLinearTolerance));
   if (contact) {
     /* rho from the stiffness of the undeformed body, before any condition touches its diagonal */
     PetscCall(VecZeroEntries(s->Uloc));
@@ -317,7 +267,6 @@ PetscErrorCode IndSolverCreate(DM dm, IndAssembly assembly, IndBC bc, IndContact
 
 PetscErrorCode IndSolverSolve(IndSolver s, PetscReal load_factor, Vec U, IndSolveResult *r)
 {
-  KSP        ksp;
   IndContact c           = s->contact;
   PetscReal  atol = 0, rtol = 0, stol = 0, step_atol = 0;
   PetscInt   maxit = 0, maxf = 0;
@@ -326,7 +275,6 @@ PetscErrorCode IndSolverSolve(IndSolver s, PetscReal load_factor, Vec U, IndSolv
 
   PetscFunctionBeginUser;
   PetscCall(PetscMemzero(r, sizeof(*r)));
-  PetscCall(SNESGetKSP(s->snes, &ksp));
   s->load_factor = load_factor;
   PetscCall(IndBCSetUp(s->bc));
   /* Starting on the prescribed values makes the Newton correction vanish on constrained rows, which
@@ -349,7 +297,6 @@ PetscErrorCode IndSolverSolve(IndSolver s, PetscReal load_factor, Vec U, IndSolv
     PetscInt  its, lits;
     PetscBool converged, stuck;
     PetscCall(SNESSolve(s->snes, NULL, U));
-    PetscCall(SetRelativeTolerance(ksp, s->ksp_rtol)); /* the predictors' solves come next */
     PetscCall(SNESGetConvergedReason(s->snes, &r->reason));
     PetscCall(SNESGetIterationNumber(s->snes, &its));
     PetscCall(SNESGetLinearSolveIterations(s->snes, &lits));

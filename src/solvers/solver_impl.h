@@ -19,7 +19,4 @@ struct _p_IndSolver {
   PetscInt     itmin;       /* its iteration */
   PetscBool    stalled;     /* the last Newton solve was stopped by the stall test */
   IndBordered  border;      /* load control (NULL: depth control) */
-  PetscReal    ttol;        /* the current Newton solve's residual target */
-  PetscReal    ksp_rtol;    /* the linear solves' relative tolerance away from that target */
-  PetscReal    safeguard;   /* near it, a linear solve stops at this fraction of the residual left (forcing.h) */
 };
