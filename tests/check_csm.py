@@ -43,9 +43,12 @@ def main():
     failed = 0
     if args.hertz:
         loads = []
+        # An elastic body pressed without friction has one equilibrium at each depth, whatever the path: one step
+        # each (options later on the command line win)
         for dd in (-0.1, 0.1):
             out = os.path.join(args.workdir, f"depth{dd:+g}")
-            if not indentrun.run(args, args.np, options + ["-load_depth", repr(args.depth + dd)], out, "indent"):
+            if not indentrun.run(args, args.np, options + ["-load_depth", repr(args.depth + dd), "-load_steps", "1"],
+                                 out, "indent"):
                 return 1
             loads.append(table(out, "load_displacement.csv")["load_uN"][-1])
         slope = (loads[1] - loads[0]) / 0.2
