@@ -6,4 +6,6 @@ top=$(cd "$(dirname "$0")/.." && pwd)
 "$top/scripts/build.sh"
 . "$top/scripts/mpi-env.sh"
 cd "${BUILD_DIR:-$top/build}"
-ctest -j "$(nproc)" --output-on-failure "$@"
+# nproc counts OMP_NUM_THREADS, which mpi-env.sh sets to 1 for the tests' BLAS: without this the suite ran one test
+# at a time
+ctest -j "$(env -u OMP_NUM_THREADS -u OMP_THREAD_LIMIT nproc)" --output-on-failure "$@"
