@@ -342,13 +342,3 @@ foreach(rc
     COMMAND $<TARGET_FILE:test_run_checks> ${RC_BOX} ${rcopts} -output_dir
     ${CMAKE_CURRENT_BINARY_DIR}/run_checks_${rcname})
 endforeach()
-
-# Each bad-input test runs in a directory of its own: the default -output_dir ("output") of another
-# test's run must not be what it finds (a directory holding a run is refused before anything else).
-get_property(input_tests DIRECTORY PROPERTY TESTS)
-foreach(t IN LISTS input_tests)
-  if(t MATCHES "^(bad_|help_)")
-    file(MAKE_DIRECTORY ${BAD_DIR}/cwd/${t})
-    set_tests_properties(${t} PROPERTIES WORKING_DIRECTORY ${BAD_DIR}/cwd/${t})
-  endif()
-endforeach()
