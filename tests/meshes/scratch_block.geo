@@ -5,8 +5,9 @@
 // because the cells do). Outside the core, No cells per direction grow by a geometric progression whose
 // first cell is as large as a core cell, out to a block [x0 - L, x1 + L] x [0, Wc + L] x [-(Wc + L), 0]
 // that is large against the contact, so its finite size matters little.
-// L = 2000 is 14 contact radii of the tests' spheres. L = 5000 gave 5% less load (the Cattaneo-Mindlin sphere) and took the
-// scratch tests twice as long: GAMG needs more iterations on the longer, flatter outer cells.
+// L = 2000 is 14 contact radii of the tests' spheres. L = 5000 gave 5% less load (the Cattaneo-Mindlin
+// sphere) and took the scratch tests twice as long: GAMG needs more iterations on the longer, flatter
+// outer cells.
 // -setnumber e <nm> -setnumber x0 <nm> -setnumber x1 <nm> -setnumber Wc <nm> -setnumber L <nm>
 // -setnumber No <cells>; (x1 - x0) / e and Wc / e must be whole numbers of cells.
 DefineConstant[ e = 25, x0 = -250, x1 = 450, Wc = 250, L = 2000, No = 5 ];
