@@ -20,6 +20,7 @@ WHITE_BOX = {
     "tests/test_matinsert.c": {"physics": "switches the assembly's cached insertion off to compare"},
     "tests/test_held_lu.c": {"solvers": "reads the size of the free block the section's direct solve factors"},
     "tests/test_linesearch.c": {"solvers": "unit test of depth control's line search, private to the solvers"},
+    "tests/test_pcreuse.c": {"solvers": "unit test of the rule that rebuilds the multigrid, private to the solvers"},
     "tests/solver_anatomy.c": {"contact": "diagnostic that takes the Jacobian apart",
                                "solvers": "diagnostic that takes the Jacobian apart",
                                "physics": "diagnostic that takes the Jacobian apart"},

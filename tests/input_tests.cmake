@@ -130,6 +130,8 @@ indent_script_test(bad_sharp_rounding ${EXPECT_ERROR} "-indenter_sharp_rounding 
   ${INDENT} ${OK_BOX} ${ELASTIC} -bc_fixed bottom -indenter_type cone -load_depth 0.1 -indenter_sharp_rounding -1)
 indent_script_test(bad_stall_its ${EXPECT_ERROR} "-newton_stall_its must be >= 0"
   ${INDENT} ${OK_BOX} ${ELASTIC} -bc_fixed bottom -newton_stall_its -1)
+indent_script_test(bad_pc_rebuild_cost ${EXPECT_ERROR} "-newton_pc_rebuild_cost must be >= 0, got -1"
+  ${INDENT} ${OK_BOX} ${ELASTIC} -bc_fixed bottom -newton_pc_rebuild_cost -1)
 indent_script_test(bad_op_fraction_indent ${EXPECT_ERROR} "-op_fraction must lie in \\(0, 1.?, got 2"
   ${INDENT} ${OK_BOX} ${ELASTIC} -bc_fixed bottom -indenter_type cone -load_depth 0.1 -op_fraction 2)
 

@@ -31,10 +31,11 @@ PetscInt       IndSolverPlasticPoints(IndSolver solver);
 PetscInt       IndSolverFailedPoints(IndSolver solver);
 /* The Newton solver (borrowed), for drivers and tests that inspect or tune it. */
 SNES           IndSolverGetSNES(IndSolver solver);
-/* Its part of the state (ind_state.h). The solver keeps no answer-changing state between steps but a cache: the
-   multigrid hierarchy (GAMG's aggregates and interpolation), built at the first Jacobian it meets and reused. Saving
-   writes nothing; loading drops the cache, so that a run continued from a state builds it at its next Jacobian, as
-   a restarted run does. */
+/* Its part of the state (ind_state.h). The solver keeps no state between steps but its preconditioner: the
+   multigrid hierarchy (GAMG's aggregates and interpolation), built at the first Jacobian it meets and kept, and its
+   Galerkin products, rebuilt when keeping them costs more Krylov iterations than a rebuild (src/solvers/pcreuse.h);
+   it changes the answers only within the linear solver's tolerance. Saving writes nothing; loading drops it, so
+   that a run continued from a state builds it at its next solve, as a restarted run does. */
 PetscErrorCode IndSolverState(void *solver, IndStateFile file);
 /* The Jacobian matrix (borrowed). */
 Mat            IndSolverGetJacobian(IndSolver solver);

@@ -4,6 +4,7 @@
 #include "bordered.h"
 #include "heldlu.h"
 #include "linesearch.h"
+#include "pcreuse.h"
 
 /* The free rows see the prescribed values, not U's, on constrained dofs: the residual of a free row
    then does not depend on constrained entries of U, so the Jacobian with those rows and columns
@@ -52,7 +53,7 @@ static PetscErrorCode RefreshMultipliers(IndSolver s, Vec U)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* On the Newton iterations where SNES lags the preconditioner (-snes_lag_preconditioner), the
+/* On the Newton iterations that keep the preconditioner (src/solvers/pcreuse.h, or SNES's lag), the
    multigrid keeps its coarse levels, but its finest level smooths with the matrix just assembled in
    place, with the Jacobi diagonal and Chebyshev bounds of the old one: a smoother for another
    operator, which can amplify what it should damp. On a plastic cube at 824k dofs the first lagged
@@ -221,9 +222,8 @@ PetscErrorCode IndSolverCreate(DM dm, IndAssembly assembly, IndBC bc, IndContact
      per Newton iteration); 1e-4 and Eisenstat-Walker cost more Newton iterations than they saved
      (doc/performance.md). */
   PetscCall(KSPSetTolerances(ksp, 1e-5, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT));
-  /* The preconditioner of every other Newton iteration serves the next one too: the contact rows
-     and plastic tangents change little between them. Sphere into a plastic block (98k dofs, 1 rank):
-     PC setup 3.6 to 2.4 s, Krylov iterations 85 to 92, Newton unchanged. */
+  /* Other preconditioners than a multigrid (-pc_type lu on a small mesh) serve two Newton iterations; a multigrid
+     follows the rule of src/solvers/pcreuse.h instead (below). */
   PetscCall(SNESSetLagPreconditioner(s->snes, 2));
   PetscCall(KSPGetPC(ksp, &pc));
   PetscCall(PCSetType(pc, PCGAMG));
@@ -256,6 +256,15 @@ PetscErrorCode IndSolverCreate(DM dm, IndAssembly assembly, IndBC bc, IndContact
     "-newton_stall_its must be >= 0, got %" PetscInt_FMT, s->stall_its);
   PetscCall(SNESSetConvergenceTest(s->snes, ConvergedUnlessStalled, s, NULL));
   PetscCall(SNESSetFromOptions(s->snes));
+  {
+    /* The multigrid is rebuilt when the Krylov iterations of keeping it would cost more
+       (src/solvers/pcreuse.h), unless the user chose SNES's fixed lag. */
+    PetscBool   lag;
+    const char *prefix;
+    PetscCall(SNESGetOptionsPrefix(s->snes, &prefix));
+    PetscCall(PetscOptionsHasName(NULL, prefix, "-snes_lag_preconditioner", &lag));
+    PetscCall(IndPCReuseCreate(ksp, (PetscBool)!lag, &s->reuse));
+  }
   if (contact) {
     /* rho from the stiffness of the undeformed body, before any condition touches its diagonal */
     PetscCall(VecZeroEntries(s->Uloc));
@@ -489,6 +498,7 @@ PetscErrorCode IndSolverDestroy(IndSolver *s)
   PetscFunctionBeginUser;
   if (!*s) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(IndBorderedDestroy(&(*s)->border));
+  PetscCall(IndPCReuseDestroy(&(*s)->reuse));
   PetscCall(SNESDestroy(&(*s)->snes));
   PetscCall(MatDestroy(&(*s)->J));
   PetscCall(VecDestroy(&(*s)->Uloc));
@@ -525,5 +535,6 @@ PetscErrorCode IndSolverState(void *obj, IndStateFile f)
   if (!IndStateReading(f)) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(SNESGetKSP(s->snes, &ksp));
   PetscCall(KSPReset(ksp));
+  PetscCall(IndPCReuseReset(s->reuse));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -2,6 +2,7 @@
 /* Private to src/solvers/: the fields of IndSolver. Other groups use the accessors of
    ind_solver.h. */
 #include "ind_solver.h"
+#include "pcreuse.h"
 
 struct _p_IndSolver {
   DM           dm;
@@ -19,4 +20,5 @@ struct _p_IndSolver {
   PetscInt     itmin;       /* its iteration */
   PetscBool    stalled;     /* the last Newton solve was stopped by the stall test */
   IndBordered  border;      /* load control (NULL: depth control) */
+  IndPCReuse   reuse;       /* when the multigrid is rebuilt */
 };
