@@ -89,7 +89,7 @@ static void NameTheOption(char msg[], size_t len)
     size_t pre = strlen(forms[k][0]);
     char   value[256], name[256];
     if (strncmp(msg, forms[k][0], pre)) continue;
-    snprintf(value, sizeof(value), "%s", msg + pre);
+    snprintf(value, sizeof(value), "%.255s", msg + pre); /* the bound said, for the compiler */
     if (forms[k][1][0]) {
       char *end = strstr(value, forms[k][1]);
       if (!end) continue;
