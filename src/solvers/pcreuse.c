@@ -12,7 +12,7 @@ void IndRebuildCountInit(IndRebuildCount *c, PetscReal cost)
 
 PetscBool IndRebuildDue(const IndRebuildCount *c)
 {
-  return (PetscBool)(c->force || c->fewest < 0 || c->excess >= c->cost);
+  return (PetscBool)(c->force || c->excess >= c->cost);
 }
 
 /* The fewest iterations any solve with this preconditioner took is what it can do: a first solve of a hard
