@@ -51,6 +51,8 @@ void           IndAssemblyGetPointCounts(IndAssembly assembly, PetscInt *failed,
 PetscErrorCode IndAssemblySetBodyForce(IndAssembly assembly, IndVectorFn fn, void *ctx);
 /* Creates the AIJ matrix (block size 3) preallocated by a dry run of the cell loop. */
 PetscErrorCode IndAssemblyCreateMatrix(IndAssembly assembly, Mat *J);
+/* Whether the matrices of the linear solves multiply by PETSc's inode kernel (-jac_inodes; off by default). */
+PetscBool      IndAssemblyJacobianInodes(IndAssembly assembly);
 /* Floc = internal minus external forces, over local cells (Floc is zeroed first), from the committed
    history and the displacement Uloc (the constitutive update of every point, not stored); sets
    nfailed and nplastic. */

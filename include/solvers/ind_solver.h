@@ -74,3 +74,6 @@ PetscBool      IndSolverLoadOutOfReach(IndSolver solver, PetscReal *load);
    before the first setup) set itself up again on its operator at its next use: after the operator
    changed in place while the preconditioner is reused, as on lagged Newton iterations. */
 PetscErrorCode IndSolverRefreshFineSmoother(KSP ksp);
+/* Makes every operator and interpolation of a set-up multigrid (nothing for other preconditioners or before the
+   first setup) multiply row by row, without PETSc's inode kernel, as the Jacobian does (-jac_inodes). */
+PetscErrorCode IndSolverMultigridRowProducts(KSP ksp);

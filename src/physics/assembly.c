@@ -248,13 +248,15 @@ PetscErrorCode IndAssemblyCreateMatrix(IndAssembly a, Mat *J)
     PetscOptionsBegin(comm, NULL, IND_TITLE "Jacobian assembly", "Assembly");
     PetscCall(IndOptionsBool("-jac_cached_insert", "Add element matrices at cached positions (false: MatSetValues)",
       cached, &cached, NULL));
-    PetscCall(IndOptionsBool("-jac_inodes", "AIJ products by groups of rows sharing their columns (PETSc's inodes)",
-      inodes, &inodes, NULL));
+    PetscCall(IndOptionsBool("-jac_inodes",
+      "AIJ products by groups of rows sharing their columns (PETSc's inodes), Jacobian and multigrid levels", inodes,
+      &inodes, NULL));
     PetscOptionsEnd();
     /* PETSc's inode product reads a node's three rows side by side, in short runs the memory prefetch
        does not follow: on the machines measured (doc/performance.md) the plain row-by-row product was
        2.3 times faster, and the Krylov iterations are mostly products with this matrix. */
     if (aij) PetscCall(MatSetOption(*J, MAT_USE_INODES, inodes));
+    a->inodes = inodes;
     PetscCall(IndMatInsertDestroy(&a->insert));
     a->J = *J;
     if (cached) PetscCall(IndMatInsertCreate(a->disc, *J, &a->insert));
@@ -351,6 +353,7 @@ PetscErrorCode IndAssemblyElasticJacobian(IndAssembly a, Vec Uloc, Mat K)
 }
 
 IND_GETTER(PetscBool, IndAssemblyIsFiniteStrain, IndAssembly, o->kin->large)
+IND_GETTER(PetscBool, IndAssemblyJacobianInodes, IndAssembly, o->inodes)
 IND_GETTER(PetscBool, IndAssemblyIsAxisymmetric, IndAssembly, o->layout->axisymmetric)
 IND_GETTER(IndDisc, IndAssemblyGetDisc, IndAssembly, o->disc)
 

@@ -22,6 +22,7 @@ struct _p_IndAssembly {
   const PetscReal     *khoop;    /* what the kinematics get: hoop there, NULL in 3D */
   Mat                  J;        /* the matrix made by IndAssemblyCreateMatrix (borrowed) */
   IndMatInsert         insert;   /* and its cached insertion (NULL: MatSetValues) */
+  PetscBool            inodes;   /* products by PETSc's inode kernel (-jac_inodes) */
 };
 
 #include "material_impl.h"

@@ -81,6 +81,43 @@ PetscErrorCode IndSolverRefreshFineSmoother(KSP ksp)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* GAMG's coarse operators are AIJ matrices whose rows come in groups of 6 with one column pattern (a block of
+   rigid-body modes per aggregate), so PETSc multiplies them with its inode kernel, which on the machines measured
+   was 1.4 to 2.4 times slower than the plain row-by-row product (doc/performance.md). The coarse levels cost a
+   third of a V-cycle on the README's case. The option set after GAMG made a matrix holds for the numeric
+   products that refresh it (MAT_REUSE_MATRIX) until the hierarchy is built anew. */
+PetscErrorCode IndSolverMultigridRowProducts(KSP ksp)
+{
+  PC        pc;
+  PetscInt  levels;
+  PetscBool mg;
+
+  PetscFunctionBeginUser;
+  PetscCall(KSPGetPC(ksp, &pc));
+  PetscCall(PetscObjectTypeCompareAny((PetscObject)pc, &mg, PCMG, PCGAMG, ""));
+  if (!mg) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(PCMGGetLevels(pc, &levels));
+  /* not the coarsest: its direct solver factors with the inode layout it was set up with */
+  for (PetscInt l = 1; l < levels; ++l) {
+    KSP       smoother;
+    Mat       A, P;
+    PetscBool aij, set;
+    PetscCall(PCMGGetSmoother(pc, l, &smoother));
+    PetscCall(KSPGetOperatorsSet(smoother, &set, NULL));
+    if (!set) continue; /* a level not set up (yet, or since KSPReset) */
+    PetscCall(KSPGetOperators(smoother, &A, &P));
+    for (int k = 0; k < 2; ++k) {
+      Mat M = k ? P : A;
+      PetscCall(PetscObjectBaseTypeCompareAny((PetscObject)M, &aij, MATSEQAIJ, MATMPIAIJ, ""));
+      if (aij) PetscCall(MatSetOption(M, MAT_USE_INODES, PETSC_FALSE));
+    }
+    PetscCall(PCMGGetInterpolation(pc, l, &P));
+    PetscCall(PetscObjectBaseTypeCompareAny((PetscObject)P, &aij, MATSEQAIJ, MATMPIAIJ, ""));
+    if (aij) PetscCall(MatSetOption(P, MAT_USE_INODES, PETSC_FALSE));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscErrorCode FormJacobian(SNES snes, Vec U, Mat A, Mat P, void *ctx)
 {
   IndSolver s = (IndSolver)ctx;
@@ -103,6 +140,8 @@ static PetscErrorCode FormJacobian(SNES snes, Vec U, Mat A, Mat P, void *ctx)
     KSP ksp;
     PetscCall(SNESGetKSP(snes, &ksp));
     PetscCall(IndSolverRefreshFineSmoother(ksp));
+    /* a hierarchy made by the last solve multiplies without inodes from the next one on, as J does */
+    if (!IndAssemblyJacobianInodes(s->assembly)) PetscCall(IndSolverMultigridRowProducts(ksp));
   }
   if (A != P) {
     PetscCall(MatAssemblyBegin(A, MAT_FINAL_ASSEMBLY));

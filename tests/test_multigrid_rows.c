@@ -1,0 +1,135 @@
+static const char help[] =
+  "A multigrid whose coarse operators and interpolations multiply row by row (IndSolverMultigridRowProducts)\n"
+  "solves as before, keeps doing so through the numeric refresh of its coarse levels, and uses no inodes there.\n";
+
+#include "ind_app.h"
+
+/* Inode groups of the owned diagonal block of M (0: none, or M does not use them) */
+static PetscErrorCode InodeCount(Mat M, PetscInt *count)
+{
+  Mat       Ad = M;
+  PetscBool mpi;
+  PetscInt *sizes, limit;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscObjectTypeCompare((PetscObject)M, MATMPIAIJ, &mpi));
+  if (mpi) PetscCall(MatMPIAIJGetSeqAIJ(M, &Ad, NULL, NULL));
+  *count = 0;
+  PetscCall(MatInodeGetInodeSizes(Ad, count, &sizes, &limit));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Inode groups summed over the coarse operators above the coarsest, all ranks */
+static PetscErrorCode CoarseInodes(KSP ksp, PetscInt *total)
+{
+  PC       pc;
+  PetscInt levels, n;
+
+  PetscFunctionBeginUser;
+  *total = 0;
+  PetscCall(KSPGetPC(ksp, &pc));
+  PetscCall(PCMGGetLevels(pc, &levels));
+  for (PetscInt l = 1; l < levels - 1; ++l) {
+    KSP smoother;
+    Mat A;
+    PetscCall(PCMGGetSmoother(pc, l, &smoother));
+    PetscCall(KSPGetOperators(smoother, &A, NULL));
+    PetscCall(InodeCount(A, &n));
+    *total += n;
+  }
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, total, 1, MPIU_INT, MPI_SUM, PetscObjectComm((PetscObject)ksp)));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode Solve(KSP ksp, Vec b, Vec x, PetscInt *its)
+{
+  KSPConvergedReason reason;
+
+  PetscFunctionBeginUser;
+  PetscCall(VecZeroEntries(x));
+  PetscCall(KSPSolve(ksp, b, x));
+  PetscCall(KSPGetConvergedReason(ksp, &reason));
+  PetscCall(KSPGetIterationNumber(ksp, its));
+  if (reason <= 0) *its = -1;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode RelativeDifference(Vec x, Vec y, PetscReal *d)
+{
+  Vec       e;
+  PetscReal ny;
+
+  PetscFunctionBeginUser;
+  PetscCall(VecDuplicate(x, &e));
+  PetscCall(VecWAXPY(e, -1.0, y, x));
+  PetscCall(VecNorm(e, NORM_2, d));
+  PetscCall(VecNorm(y, NORM_2, &ny));
+  *d /= ny;
+  PetscCall(VecDestroy(&e));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+int main(int argc, char **argv)
+{
+  IndApp    app;
+  KSP       ksp;
+  PC        pc;
+  Mat       J;
+  Vec       b, x, xref, Uloc;
+  PetscInt  its[3], before, after, levels;
+  PetscReal d[2];
+  PetscBool ok;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscInitialize(&argc, &argv, NULL, help));
+  PetscCall(PetscOptionsSetValue(NULL, "-snes_lag_preconditioner", "1"));
+  PetscCall(IndAppCreate(PETSC_COMM_WORLD, &app));
+  J = IndSolverGetJacobian(IndAppGetSolver(app));
+  PetscCall(SNESGetKSP(IndSolverGetSNES(IndAppGetSolver(app)), &ksp));
+  PetscCall(KSPSetTolerances(ksp, 1e-10, PETSC_DEFAULT, PETSC_DEFAULT, 500));
+  PetscCall(MatCreateVecs(J, &x, &b));
+  PetscCall(VecDuplicate(x, &xref));
+  PetscCall(VecSet(b, 1.0));
+  PetscCall(IndBCSetUp(IndAppGetBC(app)));
+  PetscCall(DMGetLocalVector(IndAppGetDM(app), &Uloc));
+  PetscCall(VecZeroEntries(Uloc));
+  PetscCall(IndAssemblyJacobian(IndAppGetAssembly(app), Uloc, J));
+  PetscCall(IndBCApplyJacobian(IndAppGetBC(app), J));
+
+  /* a fresh hierarchy as PETSc makes it */
+  PetscCall(KSPSetOperators(ksp, J, J));
+  PetscCall(KSPSetReusePreconditioner(ksp, PETSC_FALSE));
+  PetscCall(Solve(ksp, b, xref, &its[0]));
+  PetscCall(KSPGetPC(ksp, &pc));
+  PetscCall(PCMGGetLevels(pc, &levels));
+  PetscCall(CoarseInodes(ksp, &before));
+
+  /* the same hierarchy, row by row */
+  PetscCall(IndSolverMultigridRowProducts(ksp));
+  PetscCall(KSPSetReusePreconditioner(ksp, PETSC_TRUE));
+  PetscCall(Solve(ksp, b, x, &its[1]));
+  PetscCall(RelativeDifference(x, xref, &d[0]));
+
+  /* the matrix assembled again: GAMG refreshes its coarse operators in place (and refactors the coarsest) */
+  PetscCall(IndAssemblyJacobian(IndAppGetAssembly(app), Uloc, J));
+  PetscCall(IndBCApplyJacobian(IndAppGetBC(app), J));
+  PetscCall(KSPSetReusePreconditioner(ksp, PETSC_FALSE));
+  PetscCall(Solve(ksp, b, x, &its[2]));
+  PetscCall(RelativeDifference(x, xref, &d[1]));
+  PetscCall(CoarseInodes(ksp, &after));
+
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD,
+    "%" PetscInt_FMT " levels; Krylov iterations: fresh %" PetscInt_FMT ", row by row %" PetscInt_FMT
+    ", refreshed %" PetscInt_FMT "; solutions differ by %.2e and %.2e; inode groups on the coarse operators %"
+    PetscInt_FMT " before, %" PetscInt_FMT " after\n", levels, its[0], its[1], its[2], (double)d[0], (double)d[1],
+    before, after));
+  ok = (PetscBool)(levels >= 3 && its[0] > 0 && its[1] == its[0] && its[2] == its[0] && d[0] < 1e-10 &&
+                   d[1] < 1e-10 && before > 0 && after == 0);
+  PetscCall(DMRestoreLocalVector(IndAppGetDM(app), &Uloc));
+  PetscCall(VecDestroy(&x));
+  PetscCall(VecDestroy(&xref));
+  PetscCall(VecDestroy(&b));
+  PetscCall(IndAppDestroy(&app));
+  PetscCall(PetscFinalize());
+  return ok ? 0 : 1;
+}
