@@ -3,6 +3,7 @@ static const char help[] =
                            "new matrix once its finest smoother is refreshed (IndSolverRefreshFineSmoother).\n";
 
 #include "ind_app.h"
+#include "ksp_count.h"
 
 /* A shear u_x = a z^2 exp(-(x^2 + y^2) / 0.05) near the top corner at the origin of the unit block: with a
    plastic material the points there yield and their tangent softens, as under an indenter, while
@@ -42,20 +43,6 @@ static PetscErrorCode Tangent(IndApp app, Vec Uloc, Mat J)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Iterations of one solve with J (the PC set up before, or anew); -1 when it does not converge. */
-static PetscErrorCode Solve(KSP ksp, Vec b, Vec x, PetscInt *its)
-{
-  KSPConvergedReason reason;
-
-  PetscFunctionBeginUser;
-  PetscCall(VecZeroEntries(x));
-  PetscCall(KSPSolve(ksp, b, x));
-  PetscCall(KSPGetConvergedReason(ksp, &reason));
-  PetscCall(KSPGetIterationNumber(ksp, its));
-  if (reason <= 0) *its = -1;
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 int main(int argc, char **argv)
 {
   IndApp   app;
@@ -85,7 +72,7 @@ int main(int argc, char **argv)
   PetscCall(Tangent(app, U1, J));
   PetscCall(KSPSetOperators(ksp, J, J));
   PetscCall(KSPSetReusePreconditioner(ksp, PETSC_FALSE));
-  PetscCall(Solve(ksp, b, x, &fresh));
+  PetscCall(SolveCounted(ksp, b, x, &fresh));
   {
     Vec      Floc;
     PetscInt mine;
@@ -100,11 +87,11 @@ int main(int argc, char **argv)
   for (int refresh = 0; refresh < 2; ++refresh) {
     PetscCall(KSPSetReusePreconditioner(ksp, PETSC_FALSE));
     PetscCall(Tangent(app, U0, J));
-    PetscCall(Solve(ksp, b, x, refresh ? &refreshed : &stale));
+    PetscCall(SolveCounted(ksp, b, x, refresh ? &refreshed : &stale));
     PetscCall(Tangent(app, U1, J));
     PetscCall(KSPSetReusePreconditioner(ksp, PETSC_TRUE));
     if (refresh) PetscCall(IndSolverRefreshFineSmoother(ksp));
-    PetscCall(Solve(ksp, b, x, refresh ? &refreshed : &stale));
+    PetscCall(SolveCounted(ksp, b, x, refresh ? &refreshed : &stale));
   }
   PetscCall(DMRestoreLocalVector(IndAppGetDM(app), &U0));
   PetscCall(DMRestoreLocalVector(IndAppGetDM(app), &U1));

@@ -3,6 +3,7 @@ static const char help[] =
   "solves as before, keeps doing so through the numeric refresh of its coarse levels, and uses no inodes there.\n";
 
 #include "ind_app.h"
+#include "ksp_count.h"
 
 /* Inode groups of the owned diagonal block of M (0: none, or M does not use them) */
 static PetscErrorCode InodeCount(Mat M, PetscInt *count)
@@ -38,19 +39,6 @@ static PetscErrorCode CoarseInodes(KSP ksp, PetscInt *total)
     *total += n;
   }
   PetscCall(MPIU_Allreduce(MPI_IN_PLACE, total, 1, MPIU_INT, MPI_SUM, PetscObjectComm((PetscObject)ksp)));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-static PetscErrorCode Solve(KSP ksp, Vec b, Vec x, PetscInt *its)
-{
-  KSPConvergedReason reason;
-
-  PetscFunctionBeginUser;
-  PetscCall(VecZeroEntries(x));
-  PetscCall(KSPSolve(ksp, b, x));
-  PetscCall(KSPGetConvergedReason(ksp, &reason));
-  PetscCall(KSPGetIterationNumber(ksp, its));
-  if (reason <= 0) *its = -1;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -99,7 +87,7 @@ int main(int argc, char **argv)
   /* a fresh hierarchy as PETSc makes it */
   PetscCall(KSPSetOperators(ksp, J, J));
   PetscCall(KSPSetReusePreconditioner(ksp, PETSC_FALSE));
-  PetscCall(Solve(ksp, b, xref, &its[0]));
+  PetscCall(SolveCounted(ksp, b, xref, &its[0]));
   PetscCall(KSPGetPC(ksp, &pc));
   PetscCall(PCMGGetLevels(pc, &levels));
   PetscCall(CoarseInodes(ksp, &before));
@@ -107,14 +95,14 @@ int main(int argc, char **argv)
   /* the same hierarchy, row by row */
   PetscCall(IndSolverMultigridRowProducts(ksp));
   PetscCall(KSPSetReusePreconditioner(ksp, PETSC_TRUE));
-  PetscCall(Solve(ksp, b, x, &its[1]));
+  PetscCall(SolveCounted(ksp, b, x, &its[1]));
   PetscCall(RelativeDifference(x, xref, &d[0]));
 
   /* the matrix assembled again: GAMG refreshes its coarse operators in place (and refactors the coarsest) */
   PetscCall(IndAssemblyJacobian(IndAppGetAssembly(app), Uloc, J));
   PetscCall(IndBCApplyJacobian(IndAppGetBC(app), J));
   PetscCall(KSPSetReusePreconditioner(ksp, PETSC_FALSE));
-  PetscCall(Solve(ksp, b, x, &its[2]));
+  PetscCall(SolveCounted(ksp, b, x, &its[2]));
   PetscCall(RelativeDifference(x, xref, &d[1]));
   PetscCall(CoarseInodes(ksp, &after));
 

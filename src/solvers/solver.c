@@ -53,6 +53,19 @@ static PetscErrorCode RefreshMultipliers(IndSolver s, Vec U)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The levels of ksp's multigrid preconditioner; 0 for another preconditioner, or a multigrid not set up yet. */
+static PetscErrorCode MultigridLevels(KSP ksp, PC *pc, PetscInt *levels)
+{
+  PetscBool mg;
+
+  PetscFunctionBeginUser;
+  *levels = 0;
+  PetscCall(KSPGetPC(ksp, pc));
+  PetscCall(PetscObjectTypeCompareAny((PetscObject)*pc, &mg, PCMG, PCGAMG, ""));
+  if (mg) PetscCall(PCMGGetLevels(*pc, levels));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* On the Newton iterations that keep the preconditioner (src/solvers/pcreuse.h, or SNES's lag), the
    multigrid keeps its coarse levels, but its finest level smooths with the matrix just assembled in
    place, with the Jacobi diagonal and Chebyshev bounds of the old one: a smoother for another
@@ -63,17 +76,13 @@ static PetscErrorCode RefreshMultipliers(IndSolver s, Vec U)
    multigrid sets them again itself, and the smoother still sets up once. */
 PetscErrorCode IndSolverRefreshFineSmoother(KSP ksp)
 {
-  PetscInt  levels;
-  KSP       smoother;
-  PC        pc;
-  Mat       A, P;
-  PetscBool mg;
+  PetscInt levels;
+  KSP      smoother;
+  PC       pc;
+  Mat      A, P;
 
   PetscFunctionBeginUser;
-  PetscCall(KSPGetPC(ksp, &pc));
-  PetscCall(PetscObjectTypeCompareAny((PetscObject)pc, &mg, PCMG, PCGAMG, ""));
-  if (!mg) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCall(PCMGGetLevels(pc, &levels));
+  PetscCall(MultigridLevels(ksp, &pc, &levels));
   if (levels < 1) PetscFunctionReturn(PETSC_SUCCESS); /* not set up yet: it will be, on this matrix */
   PetscCall(PCMGGetSmoother(pc, levels - 1, &smoother));
   PetscCall(KSPGetOperators(smoother, &A, &P));
@@ -88,15 +97,11 @@ PetscErrorCode IndSolverRefreshFineSmoother(KSP ksp)
    products that refresh it (MAT_REUSE_MATRIX) until the hierarchy is built anew. */
 PetscErrorCode IndSolverMultigridRowProducts(KSP ksp)
 {
-  PC        pc;
-  PetscInt  levels;
-  PetscBool mg;
+  PC       pc;
+  PetscInt levels;
 
   PetscFunctionBeginUser;
-  PetscCall(KSPGetPC(ksp, &pc));
-  PetscCall(PetscObjectTypeCompareAny((PetscObject)pc, &mg, PCMG, PCGAMG, ""));
-  if (!mg) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCall(PCMGGetLevels(pc, &levels));
+  PetscCall(MultigridLevels(ksp, &pc, &levels));
   /* not the coarsest: its direct solver factors with the inode layout it was set up with */
   for (PetscInt l = 1; l < levels; ++l) {
     KSP       smoother;
