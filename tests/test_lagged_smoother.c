@@ -2,8 +2,7 @@ static const char help[] =
   "A multigrid preconditioner reused after its matrix changed in place stays a preconditioner of the\n"
                            "new matrix once its finest smoother is refreshed (IndSolverRefreshFineSmoother).\n";
 
-#include "ind_app.h"
-#include "ksp_count.h"
+#include "solver_test.h"
 
 /* A shear u_x = a z^2 exp(-(x^2 + y^2) / 0.05) near the top corner at the origin of the unit block: with a
    plastic material the points there yield and their tangent softens, as under an indenter, while
@@ -46,19 +45,14 @@ static PetscErrorCode Tangent(IndApp app, Vec Uloc, Mat J)
 int main(int argc, char **argv)
 {
   IndApp   app;
-  KSP      ksp;
-  Mat      J;
+  KSP      ksp = NULL;
+  Mat      J   = NULL;
   Vec      b, x, U0, U1;
   PetscInt fresh, stale, refreshed, nplastic;
 
   PetscFunctionBeginUser;
   PetscCall(PetscInitialize(&argc, &argv, NULL, help));
-  /* the test decides when the preconditioner is built, not the solver's rule (src/solvers/pcreuse.h) */
-  PetscCall(PetscOptionsSetValue(NULL, "-snes_lag_preconditioner", "1"));
-  PetscCall(IndAppCreate(PETSC_COMM_WORLD, &app));
-  J = IndSolverGetJacobian(IndAppGetSolver(app));
-  PetscCall(SNESGetKSP(IndSolverGetSNES(IndAppGetSolver(app)), &ksp));
-  PetscCall(KSPSetTolerances(ksp, 1e-8, PETSC_DEFAULT, PETSC_DEFAULT, 500));
+  PetscCall(SolverTestCreate(1e-8, &app, &J, &ksp));
   PetscCall(MatCreateVecs(J, &x, &b));
   PetscCall(VecSet(b, 1.0));
   PetscCall(IndBCSetUp(IndAppGetBC(app)));

@@ -2,8 +2,7 @@ static const char help[] =
   "A multigrid whose coarse operators and interpolations multiply row by row (IndSolverMultigridRowProducts)\n"
   "solves as before, keeps doing so through the numeric refresh of its coarse levels, and uses no inodes there.\n";
 
-#include "ind_app.h"
-#include "ksp_count.h"
+#include "solver_test.h"
 
 /* Inode groups of the owned diagonal block of M (0: none, or M does not use them) */
 static PetscErrorCode InodeCount(Mat M, PetscInt *count)
@@ -60,9 +59,9 @@ static PetscErrorCode RelativeDifference(Vec x, Vec y, PetscReal *d)
 int main(int argc, char **argv)
 {
   IndApp    app;
-  KSP       ksp;
+  KSP       ksp = NULL;
   PC        pc;
-  Mat       J;
+  Mat       J   = NULL;
   Vec       b, x, xref, Uloc;
   PetscInt  its[3], before, after, levels;
   PetscReal d[2];
@@ -70,11 +69,7 @@ int main(int argc, char **argv)
 
   PetscFunctionBeginUser;
   PetscCall(PetscInitialize(&argc, &argv, NULL, help));
-  PetscCall(PetscOptionsSetValue(NULL, "-snes_lag_preconditioner", "1"));
-  PetscCall(IndAppCreate(PETSC_COMM_WORLD, &app));
-  J = IndSolverGetJacobian(IndAppGetSolver(app));
-  PetscCall(SNESGetKSP(IndSolverGetSNES(IndAppGetSolver(app)), &ksp));
-  PetscCall(KSPSetTolerances(ksp, 1e-10, PETSC_DEFAULT, PETSC_DEFAULT, 500));
+  PetscCall(SolverTestCreate(1e-10, &app, &J, &ksp));
   PetscCall(MatCreateVecs(J, &x, &b));
   PetscCall(VecDuplicate(x, &xref));
   PetscCall(VecSet(b, 1.0));
