@@ -105,20 +105,17 @@ PetscErrorCode IndSolverMultigridRowProducts(KSP ksp)
   /* not the coarsest: its direct solver factors with the inode layout it was set up with */
   for (PetscInt l = 1; l < levels; ++l) {
     KSP       smoother;
-    Mat       A, P;
+    Mat       M[3];
     PetscBool aij, set;
     PetscCall(PCMGGetSmoother(pc, l, &smoother));
     PetscCall(KSPGetOperatorsSet(smoother, &set, NULL));
     if (!set) continue; /* a level not set up (yet, or since KSPReset) */
-    PetscCall(KSPGetOperators(smoother, &A, &P));
-    for (int k = 0; k < 2; ++k) {
-      Mat M = k ? P : A;
-      PetscCall(PetscObjectBaseTypeCompareAny((PetscObject)M, &aij, MATSEQAIJ, MATMPIAIJ, ""));
-      if (aij) PetscCall(MatSetOption(M, MAT_USE_INODES, PETSC_FALSE));
+    PetscCall(KSPGetOperators(smoother, &M[0], &M[1]));
+    PetscCall(PCMGGetInterpolation(pc, l, &M[2]));
+    for (int k = 0; k < 3; ++k) {
+      PetscCall(PetscObjectBaseTypeCompareAny((PetscObject)M[k], &aij, MATSEQAIJ, MATMPIAIJ, ""));
+      if (aij) PetscCall(MatSetOption(M[k], MAT_USE_INODES, PETSC_FALSE));
     }
-    PetscCall(PCMGGetInterpolation(pc, l, &P));
-    PetscCall(PetscObjectBaseTypeCompareAny((PetscObject)P, &aij, MATSEQAIJ, MATMPIAIJ, ""));
-    if (aij) PetscCall(MatSetOption(P, MAT_USE_INODES, PETSC_FALSE));
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
