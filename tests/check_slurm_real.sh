@@ -71,6 +71,9 @@ mkdir -p "$tmp/state" "$tmp/spool"
 : > "$tmp/pids"
 export SLURM_CONF=$tmp/slurm.conf
 job_id=""
+# A job's states on its way to the end: scontrol prints a state flag in place of RUNNING while it is
+# set (SIGNALING while --signal's warning is delivered, REQUEUED, STAGE_OUT ...).
+unfinished='PENDING|RUNNING|COMPLETING|CONFIGURING|REQUEUED|REQUEUE_FED|RESIZING|SUSPENDED|SIGNALING|STAGE_OUT'
 daemons=() # slurmd, slurmctld, munged: stopped in this order
 watchdog_pid=""
 
@@ -111,10 +114,10 @@ job_processes() {
 cleanup() {
   local pid f alive
   trap - EXIT INT TERM
-  if [[ -n $job_id ]] && scontrol -o show job "$job_id" 2> /dev/null | grep -Eq 'JobState=(PENDING|RUNNING|COMPLETING|REQUEUED|CONFIGURING|SUSPENDED)'; then
+  if [[ -n $job_id ]] && scontrol -o show job "$job_id" 2> /dev/null | grep -Eq "JobState=($unfinished)"; then
     scancel "$job_id" 2> /dev/null
     for _ in $(seq 20); do
-      scontrol -o show job "$job_id" 2> /dev/null | grep -Eq 'JobState=(PENDING|RUNNING|COMPLETING|REQUEUED|CONFIGURING)' || break
+      scontrol -o show job "$job_id" 2> /dev/null | grep -Eq "JobState=($unfinished)" || break
       sleep 0.5
     done
   fi
@@ -330,19 +333,15 @@ while (($(date +%s) < job_deadline)); do
       fi
     done
   fi
-  case $state in
-    PENDING | RUNNING | COMPLETING | CONFIGURING | REQUEUED | REQUEUE_FED | RESIZING | SUSPENDED | "") ;;
-    *) break ;;
-  esac
+  [[ -z $state ]] || grep -Eqx "$unfinished" <<< "$state" || break
   sleep 0.5
 done
 job_out=$work/job-$job_id.out
-case $state in
-  COMPLETED) ;;
-  PENDING | RUNNING | COMPLETING | CONFIGURING | REQUEUED | "")
-    fail "job $job_id not finished after $(($(date +%s) - ${t_submit%.*})) s (state ${state:-unknown})" ;;
-  *) fail "job $job_id ended in state $state" ;;
-esac
+if [[ $state != COMPLETED ]]; then
+  [[ -z $state ]] || grep -Eqx "$unfinished" <<< "$state" &&
+    fail "job $job_id not finished after $(($(date +%s) - ${t_submit%.*})) s (state ${state:-unknown})"
+  fail "job $job_id ended in state $state"
+fi
 exit_code=$(sed -n 's/.*[[:space:]]ExitCode=\([0-9:]*\).*/\1/p' <<< "$info")
 restarts=$(sed -n 's/.*[[:space:]]Restarts=\([0-9]*\).*/\1/p' <<< "$info")
 [[ $exit_code == 0:0 ]] || fail "job $job_id: ExitCode=$exit_code"
