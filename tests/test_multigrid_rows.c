@@ -1,8 +1,10 @@
 static const char help[] =
   "A multigrid whose coarse operators and interpolations multiply row by row (IndSolverMultigridRowProducts)\n"
-  "solves as before, keeps doing so through the numeric refresh of its coarse levels, and uses no inodes there.\n";
+  "solves as before, keeps doing so through the numeric refresh of its coarse levels, and uses no inodes there;\n"
+  "its coarse operators multiply by their 6 x 6 block rows (IndBlockMultInstall).\n";
 
 #include "solver_test.h"
+#include "ind_blockmult.h"
 
 /* Inode groups of the owned diagonal block of M (0: none, or M does not use them) */
 static PetscErrorCode InodeCount(Mat M, PetscInt *count)
@@ -41,6 +43,32 @@ static PetscErrorCode CoarseInodes(KSP ksp, PetscInt *total)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Coarse operators above the coarsest, and interpolations, multiplied by block rows on every rank */
+static PetscErrorCode CoarseByBlocks(KSP ksp, PetscInt *count)
+{
+  PC       pc;
+  PetscInt levels;
+
+  PetscFunctionBeginUser;
+  *count = 0;
+  PetscCall(KSPGetPC(ksp, &pc));
+  PetscCall(PCMGGetLevels(pc, &levels));
+  for (PetscInt l = 1; l < levels; ++l) {
+    KSP       smoother;
+    Mat       M[2];
+    PetscBool active;
+    PetscCall(PCMGGetSmoother(pc, l, &smoother));
+    PetscCall(KSPGetOperators(smoother, &M[0], NULL));
+    PetscCall(PCMGGetInterpolation(pc, l, &M[1]));
+    for (int k = (l == levels - 1); k < 2; ++k) { /* the finest operator is the Jacobian */
+      PetscCall(IndBlockMultActive(M[k], &active));
+      PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &active, 1, MPIU_BOOL, MPI_LAND, PetscObjectComm((PetscObject)ksp)));
+      *count += active;
+    }
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscErrorCode RelativeDifference(Vec x, Vec y, PetscReal *d)
 {
   Vec       e;
@@ -63,7 +91,7 @@ int main(int argc, char **argv)
   PC        pc;
   Mat       J   = NULL;
   Vec       b, x, xref, Uloc;
-  PetscInt  its[3], before, after, levels;
+  PetscInt  its[3], before, after, levels, blocks[2];
   PetscReal d[2];
   PetscBool ok;
 
@@ -87,11 +115,12 @@ int main(int argc, char **argv)
   PetscCall(PCMGGetLevels(pc, &levels));
   PetscCall(CoarseInodes(ksp, &before));
 
-  /* the same hierarchy, row by row */
-  PetscCall(IndSolverMultigridRowProducts(ksp));
+  /* the same hierarchy, row by row and its coarse operators by block rows */
+  PetscCall(IndSolverMultigridRowProducts(ksp, PETSC_TRUE));
   PetscCall(KSPSetReusePreconditioner(ksp, PETSC_TRUE));
   PetscCall(SolveCounted(ksp, b, x, &its[1]));
   PetscCall(RelativeDifference(x, xref, &d[0]));
+  PetscCall(CoarseByBlocks(ksp, &blocks[0]));
 
   /* the matrix assembled again: GAMG refreshes its coarse operators in place (and refactors the coarsest) */
   PetscCall(IndAssemblyJacobian(IndAppGetAssembly(app), Uloc, J));
@@ -100,14 +129,17 @@ int main(int argc, char **argv)
   PetscCall(SolveCounted(ksp, b, x, &its[2]));
   PetscCall(RelativeDifference(x, xref, &d[1]));
   PetscCall(CoarseInodes(ksp, &after));
+  PetscCall(CoarseByBlocks(ksp, &blocks[1]));
 
   PetscCall(PetscPrintf(PETSC_COMM_WORLD,
     "%" PetscInt_FMT " levels; Krylov iterations: fresh %" PetscInt_FMT ", row by row %" PetscInt_FMT
     ", refreshed %" PetscInt_FMT "; solutions differ by %.2e and %.2e; inode groups on the coarse operators %"
-    PetscInt_FMT " before, %" PetscInt_FMT " after\n", levels, its[0], its[1], its[2], (double)d[0], (double)d[1],
-    before, after));
+    PetscInt_FMT " before, %" PetscInt_FMT " after; coarse operators and interpolations by block rows %" PetscInt_FMT " and %"
+    PetscInt_FMT "\n", levels, its[0], its[1], its[2], (double)d[0], (double)d[1], before, after, blocks[0],
+    blocks[1]));
   ok = (PetscBool)(levels >= 3 && its[0] > 0 && its[1] == its[0] && its[2] == its[0] && d[0] < 1e-10 &&
-                   d[1] < 1e-10 && before > 0 && after == 0);
+                   d[1] < 1e-10 && before > 0 && after == 0 && blocks[0] == 2 * levels - 3 &&
+                   blocks[1] == 2 * levels - 3);
   PetscCall(DMRestoreLocalVector(IndAppGetDM(app), &Uloc));
   PetscCall(VecDestroy(&x));
   PetscCall(VecDestroy(&xref));

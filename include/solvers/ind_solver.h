@@ -75,5 +75,6 @@ PetscBool      IndSolverLoadOutOfReach(IndSolver solver, PetscReal *load);
    changed in place while the preconditioner is reused, as on lagged Newton iterations. */
 PetscErrorCode IndSolverRefreshFineSmoother(KSP ksp);
 /* Makes every operator and interpolation of a set-up multigrid (nothing for other preconditioners or before the
-   first setup) multiply row by row, without PETSc's inode kernel, as the Jacobian does (-jac_inodes). */
-PetscErrorCode IndSolverMultigridRowProducts(KSP ksp);
+   first setup) multiply row by row, without PETSc's inode kernel, as the Jacobian does (-jac_inodes); with
+   blocks, the operators by their block rows (IndBlockMultInstall, -jac_block_products). */
+PetscErrorCode IndSolverMultigridRowProducts(KSP ksp, PetscBool blocks);

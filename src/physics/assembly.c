@@ -1,5 +1,6 @@
 #include "assembly_impl.h"
 #include "ind_pattern.h"
+#include "ind_blockmult.h"
 
 const char *const IndTangentTypes[]     = {"consistent", "elastic", "IndTangent", "IND_TANGENT_", NULL};
 IndRegistry IndKinematicsRegistry = {
@@ -244,19 +245,27 @@ PetscErrorCode IndAssemblyCreateMatrix(IndAssembly a, Mat *J)
   PetscCall(MatSetOption(*J, MAT_SUBSET_OFF_PROC_ENTRIES, PETSC_TRUE));
   PetscCall(MatSetOption(*J, MAT_NO_OFF_PROC_ZERO_ROWS, PETSC_TRUE));
   {
-    PetscBool cached = PETSC_TRUE, inodes = PETSC_FALSE;
+    PetscBool cached = PETSC_TRUE, inodes = PETSC_FALSE, nodes = PETSC_TRUE;
     PetscOptionsBegin(comm, NULL, IND_TITLE "Jacobian assembly", "Assembly");
     PetscCall(IndOptionsBool("-jac_cached_insert", "Add element matrices at cached positions (false: MatSetValues)",
       cached, &cached, NULL));
     PetscCall(IndOptionsBool("-jac_inodes",
       "AIJ products by groups of rows sharing their columns (PETSc's inodes), Jacobian and multigrid levels", inodes,
       &inodes, NULL));
+    PetscCall(IndOptionsBool("-jac_block_products",
+      "Products by block rows: a node's three rows of the Jacobian together, one column index per 3 x 3 block "
+      "(GAMG's coarse operators by their 6 x 6 blocks)", nodes, &nodes, NULL));
     PetscOptionsEnd();
     /* PETSc's inode product reads a node's three rows side by side, in short runs the memory prefetch
        does not follow: on the machines measured (doc/performance.md) the plain row-by-row product was
        2.3 times faster, and the Krylov iterations are mostly products with this matrix. */
     if (aij) PetscCall(MatSetOption(*J, MAT_USE_INODES, inodes));
+    if (aij && !inodes && nodes) {
+      PetscBool installed;
+      PetscCall(IndBlockMultInstall(*J, &installed));
+    }
     a->inodes = inodes;
+    a->blocks = (PetscBool)(aij && !inodes && nodes);
     PetscCall(IndMatInsertDestroy(&a->insert));
     a->J = *J;
     if (cached) PetscCall(IndMatInsertCreate(a->disc, *J, &a->insert));
@@ -354,6 +363,7 @@ PetscErrorCode IndAssemblyElasticJacobian(IndAssembly a, Vec Uloc, Mat K)
 
 IND_GETTER(PetscBool, IndAssemblyIsFiniteStrain, IndAssembly, o->kin->large)
 IND_GETTER(PetscBool, IndAssemblyJacobianInodes, IndAssembly, o->inodes)
+IND_GETTER(PetscBool, IndAssemblyJacobianBlockProducts, IndAssembly, o->blocks)
 IND_GETTER(PetscBool, IndAssemblyIsAxisymmetric, IndAssembly, o->layout->axisymmetric)
 IND_GETTER(IndDisc, IndAssemblyGetDisc, IndAssembly, o->disc)
 

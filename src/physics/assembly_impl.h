@@ -23,6 +23,7 @@ struct _p_IndAssembly {
   Mat                  J;        /* the matrix made by IndAssemblyCreateMatrix (borrowed) */
   IndMatInsert         insert;   /* and its cached insertion (NULL: MatSetValues) */
   PetscBool            inodes;   /* products by PETSc's inode kernel (-jac_inodes) */
+  PetscBool            blocks;   /* products by block rows (-jac_block_products) */
 };
 
 #include "material_impl.h"

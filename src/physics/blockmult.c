@@ -1,0 +1,227 @@
+#include "ind_blockmult.h"
+#include "blockmult_kernels.h"
+
+#define IND_BLOCKMULT_KEY "IndBlockMult"
+
+/* The block index of one SeqAIJ matrix, for the nonzero pattern it was built on. */
+typedef struct {
+  PetscObjectState nzstate; /* MatGetNonzeroState at the build */
+  PetscBool        built;
+  PetscBool        blocks; /* the pattern is made of whole blocks */
+  PetscBool        simd;   /* the vector kernels (where the CPU has them) */
+  PetscInt        *bi, *bj;
+  IndBlockRows     rows; /* the block sizes, and bi and bj */
+} BlockIndex;
+
+static PetscErrorCode BlockIndexDestroy(void *ctx)
+{
+  BlockIndex *ix = (BlockIndex *)ctx;
+
+  PetscFunctionBegin;
+  PetscCall(PetscFree2(ix->bi, ix->bj));
+  PetscCall(PetscFree(ix));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Whether rows rbs i .. rbs i + rbs - 1 have one column pattern made of whole blocks (c .. c + cbs - 1, c a
+   multiple of cbs). */
+static PetscBool GroupFits(const PetscInt *ia, const PetscInt *ja, PetscInt rbs, PetscInt cbs, PetscInt i)
+{
+  const PetscInt s = ia[rbs * i], len = ia[rbs * i + 1] - s;
+
+  if (len % cbs) return PETSC_FALSE;
+  for (PetscInt r = 1; r < rbs; ++r)
+    if (ia[rbs * i + r + 1] - ia[rbs * i + r] != len) return PETSC_FALSE;
+  for (PetscInt k = 0; k < len; k += cbs) {
+    if (ja[s + k] % cbs) return PETSC_FALSE;
+    for (PetscInt d = 1; d < cbs; ++d)
+      if (ja[s + k + d] != ja[s + k] + d) return PETSC_FALSE;
+  }
+  for (PetscInt r = 1; r < rbs; ++r)
+    for (PetscInt k = 0; k < len; ++k)
+      if (ja[s + r * len + k] != ja[s + k]) return PETSC_FALSE;
+  return PETSC_TRUE;
+}
+
+static PetscErrorCode Build(Mat A, BlockIndex *ix)
+{
+  PetscInt        m, n, nr, rbs, cbs;
+  const PetscInt *ia, *ja;
+  PetscBool       done;
+
+  PetscFunctionBegin;
+  PetscCall(PetscFree2(ix->bi, ix->bj));
+  PetscCall(MatGetNonzeroState(A, &ix->nzstate));
+  PetscCall(MatGetLocalSize(A, &m, &n));
+  PetscCall(MatGetBlockSizes(A, &rbs, &cbs));
+  ix->built       = PETSC_TRUE;
+  ix->blocks      = (PetscBool)(rbs > 1 && cbs > 1 && m % rbs == 0 && n % cbs == 0);
+  ix->rows.rbs    = rbs;
+  ix->rows.cbs    = cbs;
+  ix->rows.ngroup = ix->blocks ? m / rbs : 0;
+  ix->rows.bi = ix->rows.bj = NULL;
+  if (!ix->blocks) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(MatGetRowIJ(A, 0, PETSC_FALSE, PETSC_FALSE, &nr, &ia, &ja, &done));
+  PetscCheck(done && nr == m, PETSC_COMM_SELF, PETSC_ERR_PLIB, "No row structure of a matrix block");
+  for (PetscInt i = 0; i < ix->rows.ngroup && ix->blocks; ++i) ix->blocks = GroupFits(ia, ja, rbs, cbs, i);
+  if (ix->blocks) {
+    PetscCall(PetscMalloc2(ix->rows.ngroup + 1, &ix->bi, ia[m] / (rbs * cbs) + 1, &ix->bj));
+    ix->bi[0] = 0;
+    for (PetscInt i = 0; i < ix->rows.ngroup; ++i) {
+      const PetscInt s = ia[rbs * i], nb = (ia[rbs * i + 1] - s) / cbs;
+      for (PetscInt k = 0; k < nb; ++k) ix->bj[ix->bi[i] + k] = ja[s + cbs * k];
+      ix->bi[i + 1] = ix->bi[i] + nb;
+    }
+    ix->rows.bi = ix->bi;
+    ix->rows.bj = ix->bj;
+  }
+  PetscCall(MatRestoreRowIJ(A, 0, PETSC_FALSE, PETSC_FALSE, &nr, &ia, &ja, &done));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The index of A for its present pattern: made at the first product (also on a copy, which MatDuplicate gives
+   the same products without the index), rebuilt when the pattern has changed. */
+static PetscErrorCode GetIndex(Mat A, BlockIndex **out)
+{
+  PetscContainer   c;
+  BlockIndex      *ix = NULL;
+  PetscObjectState st;
+
+  PetscFunctionBegin;
+  PetscCall(PetscObjectQuery((PetscObject)A, IND_BLOCKMULT_KEY, (PetscObject *)&c));
+  if (!c) {
+    PetscCall(PetscNew(&ix));
+    ix->simd = IndBlockRowsCpuSimd();
+    PetscCall(PetscContainerCreate(PETSC_COMM_SELF, &c));
+    PetscCall(PetscContainerSetPointer(c, ix));
+    PetscCall(PetscContainerSetUserDestroy(c, BlockIndexDestroy));
+    PetscCall(PetscObjectCompose((PetscObject)A, IND_BLOCKMULT_KEY, (PetscObject)c));
+    PetscCall(PetscContainerDestroy(&c));
+  } else PetscCall(PetscContainerGetPointer(c, (void **)&ix));
+  PetscCall(MatGetNonzeroState(A, &st));
+  if (!ix->built || st != ix->nzstate) PetscCall(Build(A, ix));
+  *out = ix;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* y = w + A x (w NULL: y = A x), or y = A^T x */
+static PetscErrorCode Product(Mat A, Vec xx, Vec ww, Vec yy, PetscBool transpose)
+{
+  BlockIndex        *ix = NULL;
+  const PetscScalar *a, *x, *w = NULL;
+  PetscScalar       *y;
+  const PetscInt    *ia, *ja;
+  PetscInt           m, n;
+  PetscBool          done;
+
+  PetscFunctionBegin;
+  PetscCall(GetIndex(A, &ix));
+  PetscCall(MatGetLocalSize(A, &m, &n));
+  PetscCall(MatGetRowIJ(A, 0, PETSC_FALSE, PETSC_FALSE, &m, &ia, &ja, &done));
+  PetscCheck(done, PETSC_COMM_SELF, PETSC_ERR_PLIB, "No row structure of a matrix block");
+  PetscCall(MatSeqAIJGetArrayRead(A, &a));
+  PetscCall(VecGetArrayRead(xx, &x));
+  /* w may be y: read through the same array */
+  if (ww && ww != yy) PetscCall(VecGetArrayRead(ww, &w));
+  if (ww == yy) PetscCall(VecGetArray(yy, &y));
+  else PetscCall(VecGetArrayWrite(yy, &y));
+  if (ww == yy) w = y;
+  if (transpose) {
+    if (ix->blocks) IndBlockRowsMultTranspose(&ix->rows, ix->simd, n, ia, a, x, y);
+    else IndRowsMultTranspose(m, n, ia, ja, a, x, y);
+  } else {
+    if (ix->blocks) IndBlockRowsMult(&ix->rows, ix->simd, ia, a, x, w, y);
+    else IndRowsMult(m, ia, ja, a, x, w, y);
+  }
+  if (ww == yy) PetscCall(VecRestoreArray(yy, &y));
+  else PetscCall(VecRestoreArrayWrite(yy, &y));
+  if (ww && ww != yy) PetscCall(VecRestoreArrayRead(ww, &w));
+  PetscCall(VecRestoreArrayRead(xx, &x));
+  PetscCall(MatSeqAIJRestoreArrayRead(A, &a));
+  PetscCall(PetscLogFlops(2.0 * ia[m]));
+  PetscCall(MatRestoreRowIJ(A, 0, PETSC_FALSE, PETSC_FALSE, &m, &ia, &ja, &done));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode MultByBlocks(Mat A, Vec x, Vec y)
+{
+  PetscFunctionBegin;
+  PetscCall(Product(A, x, NULL, y, PETSC_FALSE));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode MultAddByBlocks(Mat A, Vec x, Vec w, Vec y)
+{
+  PetscFunctionBegin;
+  PetscCall(Product(A, x, w, y, PETSC_FALSE));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode MultTransposeByBlocks(Mat A, Vec x, Vec y)
+{
+  PetscFunctionBegin;
+  PetscCall(Product(A, x, NULL, y, PETSC_TRUE));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The rank's rows with the rank's columns: the whole matrix on one rank, the diagonal block on several (its
+   products are the part of MPIAIJ's that overlaps the ghost values' exchange). */
+static PetscErrorCode LocalBlock(Mat J, Mat *A)
+{
+  PetscBool seq, mpi;
+
+  PetscFunctionBegin;
+  *A = NULL;
+  PetscCall(PetscObjectTypeCompare((PetscObject)J, MATSEQAIJ, &seq));
+  PetscCall(PetscObjectTypeCompare((PetscObject)J, MATMPIAIJ, &mpi));
+  if (seq) *A = J;
+  else if (mpi) PetscCall(MatMPIAIJGetSeqAIJ(J, A, NULL, NULL));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode IndBlockMultInstall(Mat J, PetscBool *installed)
+{
+  Mat      A;
+  PetscInt rbs, cbs;
+
+  PetscFunctionBegin;
+  *installed = PETSC_FALSE;
+  PetscCall(LocalBlock(J, &A));
+  if (!A) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(MatGetBlockSizes(A, &rbs, &cbs));
+  if (rbs < 2 || cbs < 2) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(MatSetOperation(A, MATOP_MULT, (void (*)(void))MultByBlocks));
+  PetscCall(MatSetOperation(A, MATOP_MULT_ADD, (void (*)(void))MultAddByBlocks));
+  PetscCall(MatSetOperation(A, MATOP_MULT_TRANSPOSE, (void (*)(void))MultTransposeByBlocks));
+  *installed = PETSC_TRUE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode IndBlockMultUseVectorUnits(Mat J, PetscBool use)
+{
+  Mat         A;
+  BlockIndex *ix;
+
+  PetscFunctionBegin;
+  PetscCall(LocalBlock(J, &A));
+  if (!A) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(GetIndex(A, &ix));
+  ix->simd = (PetscBool)(use && IndBlockRowsCpuSimd());
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode IndBlockMultActive(Mat J, PetscBool *active)
+{
+  Mat            A;
+  PetscContainer c = NULL;
+  BlockIndex    *ix;
+
+  PetscFunctionBegin;
+  *active = PETSC_FALSE;
+  PetscCall(LocalBlock(J, &A));
+  if (A) PetscCall(PetscObjectQuery((PetscObject)A, IND_BLOCKMULT_KEY, (PetscObject *)&c));
+  if (!c) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(PetscContainerGetPointer(c, (void **)&ix));
+  *active = (PetscBool)(ix->built && ix->blocks);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
