@@ -1,14 +1,15 @@
 static const char help[] =
   "Throughput of the matrix-vector product that bounds a Krylov iteration (doc/performance.md): the 27-node\n"
   "pattern of a Q1 box of n^3 cells in 3 x 3 blocks, as the Jacobian of the plastic cube stores it, multiplied\n"
-  "as AIJ with PETSc's inode kernel (rows of a node side by side), as AIJ row by row (the Jacobian's choice,\n"
-  "-jac_inodes 0) and as BAIJ with 3 x 3 blocks, beside a streaming read of the AIJ arrays. Prints one table;\n"
-  "not a test.\n"
+  "as AIJ with PETSc's inode kernel (rows of a node side by side), as AIJ row by row (-jac_inodes 0), as AIJ by\n"
+  "block rows (the Jacobian's choice, -jac_block_products: with the CPU's vector units and with portable loops)\n"
+  "and as BAIJ with 3 x 3 blocks, beside a streaming read of the AIJ arrays. Prints one table; not a test.\n"
   "  -n n         cells per edge (default 64: 823,875 dofs)\n"
   "  -repeat r    products timed (the fastest is reported; default 10)\n";
 
 #include <petscmat.h>
 #include "ind_common.h"
+#include "ind_blockmult.h"
 #include <petsctime.h>
 
 /* The fastest of r products y = A x, in seconds. */
@@ -56,13 +57,14 @@ static PetscErrorCode BoxPattern(PetscInt n, Mat *A)
 int main(int argc, char **argv)
 {
   PetscInt           n = 64, repeat = 10, nr;
-  Mat                A, B, C;
+  Mat                A, B, C, D;
   Vec                x, y, z;
   const PetscInt    *ia, *ja;
   const PetscScalar *a;
   PetscBool          done;
-  PetscLogDouble     t0, t1, inode, rows, blocks, read = 1e30;
-  PetscReal          diff[2], sum = 0;
+  PetscLogDouble     t0, t1, inode, rows, blocks, grouped[2], read = 1e30;
+  PetscReal          diff[4], sum = 0;
+  PetscBool          installed;
 
   PetscCall(PetscInitialize(&argc, &argv, NULL, help));
   PetscCall(PetscOptionsGetInt(NULL, NULL, "-n", &n, NULL));
@@ -71,6 +73,10 @@ int main(int argc, char **argv)
   PetscCall(MatDuplicate(A, MAT_COPY_VALUES, &B));
   PetscCall(MatSetOption(B, MAT_USE_INODES, PETSC_FALSE));
   PetscCall(MatConvert(A, MATSEQBAIJ, MAT_INITIAL_MATRIX, &C));
+  PetscCall(MatDuplicate(B, MAT_COPY_VALUES, &D));
+  PetscCall(MatSetBlockSize(D, 3));
+  PetscCall(IndBlockMultInstall(D, &installed));
+  PetscCheck(installed, PETSC_COMM_SELF, PETSC_ERR_PLIB, "no products by block rows");
   PetscCall(MatCreateVecs(A, &x, &y));
   PetscCall(VecDuplicate(y, &z));
   PetscCall(VecSetRandom(x, NULL));
@@ -81,6 +87,12 @@ int main(int argc, char **argv)
   PetscCall(Product(C, x, z, repeat, &blocks));
   PetscCall(VecAXPY(z, -1, y));
   PetscCall(VecNorm(z, NORM_INFINITY, &diff[1]));
+  for (int k = 0; k < 2; ++k) {
+    PetscCall(IndBlockMultUseVectorUnits(D, (PetscBool)(k == 0)));
+    PetscCall(Product(D, x, z, repeat, &grouped[k]));
+    PetscCall(VecAXPY(z, -1, y));
+    PetscCall(VecNorm(z, NORM_INFINITY, &diff[2 + k]));
+  }
   PetscCall(MatGetRowIJ(A, 0, PETSC_FALSE, PETSC_FALSE, &nr, &ia, &ja, &done));
   PetscCheck(done, PETSC_COMM_SELF, PETSC_ERR_SUP, "no row structure");
   PetscCall(MatSeqAIJGetArrayRead(A, &a));
@@ -104,13 +116,18 @@ int main(int argc, char **argv)
     const double nnz = (double)ia[nr], aij = nnz * (sizeof(PetscScalar) + sizeof(PetscInt));
     PetscCall(PetscPrintf(PETSC_COMM_SELF,
                           "n %" PetscInt_FMT ", %" PetscInt_FMT " dofs, %.0f entries, AIJ arrays %.0f MB "
-                          "(products agree to %.1e and %.1e; checksum %g)\n",
-                          n, nr, nnz, aij / 1e6, (double)diff[0], (double)diff[1], (double)sum));
+                          "(products agree to %.1e, %.1e, %.1e and %.1e; checksum %g)\n",
+                          n, nr, nnz, aij / 1e6, (double)diff[0], (double)diff[1], (double)diff[2], (double)diff[3],
+                          (double)sum));
     PetscCall(PetscPrintf(PETSC_COMM_SELF, "| product | s | GB/s of the AIJ arrays |\n|---|---|---|\n"));
     PetscCall(PetscPrintf(PETSC_COMM_SELF, "| AIJ, inode kernel (PETSc's default) | %.4f | %.2f |\n", inode,
                           aij / inode / 1e9));
-    PetscCall(PetscPrintf(PETSC_COMM_SELF, "| AIJ, row by row (-jac_inodes 0) | %.4f | %.2f |\n", rows,
-                          aij / rows / 1e9));
+    PetscCall(PetscPrintf(PETSC_COMM_SELF, "| AIJ, row by row (-jac_inodes 0 -jac_block_products 0) | %.4f | %.2f |\n",
+                          rows, aij / rows / 1e9));
+    PetscCall(PetscPrintf(PETSC_COMM_SELF, "| AIJ, by block rows (-jac_block_products), vector units | %.4f | %.2f |\n",
+                          grouped[0], aij / grouped[0] / 1e9));
+    PetscCall(PetscPrintf(PETSC_COMM_SELF, "| AIJ, by block rows, portable loops | %.4f | %.2f |\n", grouped[1],
+                          aij / grouped[1] / 1e9));
     PetscCall(PetscPrintf(PETSC_COMM_SELF, "| BAIJ, 3 x 3 blocks | %.4f | %.2f |\n", blocks,
                           aij / blocks / 1e9));
     PetscCall(PetscPrintf(PETSC_COMM_SELF, "| the AIJ arrays read, no product | %.4f | %.2f |\n", read,
@@ -121,6 +138,7 @@ int main(int argc, char **argv)
   PetscCall(VecDestroy(&z));
   PetscCall(VecDestroy(&y));
   PetscCall(VecDestroy(&x));
+  PetscCall(MatDestroy(&D));
   PetscCall(MatDestroy(&C));
   PetscCall(MatDestroy(&B));
   PetscCall(MatDestroy(&A));

@@ -134,9 +134,9 @@ int main(int argc, char **argv)
   PetscCall(PetscPrintf(PETSC_COMM_WORLD,
     "%" PetscInt_FMT " levels; Krylov iterations: fresh %" PetscInt_FMT ", row by row %" PetscInt_FMT
     ", refreshed %" PetscInt_FMT "; solutions differ by %.2e and %.2e; inode groups on the coarse operators %"
-    PetscInt_FMT " before, %" PetscInt_FMT " after; coarse operators and interpolations by block rows %" PetscInt_FMT " and %"
-    PetscInt_FMT "\n", levels, its[0], its[1], its[2], (double)d[0], (double)d[1], before, after, blocks[0],
-    blocks[1]));
+    PetscInt_FMT " before, %" PetscInt_FMT " after; coarse operators and interpolations by block rows %"
+    PetscInt_FMT " and %" PetscInt_FMT "\n", levels, its[0], its[1], its[2], (double)d[0], (double)d[1], before,
+    after, blocks[0], blocks[1]));
   ok = (PetscBool)(levels >= 3 && its[0] > 0 && its[1] == its[0] && its[2] == its[0] && d[0] < 1e-10 &&
                    d[1] < 1e-10 && before > 0 && after == 0 && blocks[0] == 2 * levels - 3 &&
                    blocks[1] == 2 * levels - 3);

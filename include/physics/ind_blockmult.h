@@ -3,9 +3,10 @@
    that share one column pattern made of whole 3 x 3 node blocks (the pattern of IndPatternFromCells), GAMG's
    coarse operators in groups of 6 rows with 6 x 6 blocks, its interpolations in node triples with blocks of 6
    columns: a group's rows can be multiplied together, reading one column index per block instead of one per
-   entry and each block of x once, 8.4 bytes per entry of a 3 x 3 block instead of 12. The products are bound by memory bandwidth, so this is what a Krylov iteration gains
-   (doc/performance.md, "Products by block rows"). The values stay in the matrix's own AIJ arrays; the block
-   index (one integer per block) is built at the first product and again when the pattern changes.
+   entry and each block of x once, 8.4 bytes per entry of a 3 x 3 block instead of 12. The products are bound by
+   memory bandwidth, so this is what a Krylov iteration gains (doc/performance.md, "Products by block rows"). The
+   values stay in the matrix's own AIJ arrays; the block index (one integer per block) is built at the first
+   product and again when the pattern changes.
 
    Installed on the rank's diagonal block (MPIAIJ) or on the matrix itself (SeqAIJ) as its MATOP_MULT,
    MATOP_MULT_ADD and MATOP_MULT_TRANSPOSE. A pattern that is not made of whole blocks is multiplied row by row,
