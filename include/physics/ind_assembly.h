@@ -53,7 +53,8 @@ PetscErrorCode IndAssemblySetBodyForce(IndAssembly assembly, IndVectorFn fn, voi
 PetscErrorCode IndAssemblyCreateMatrix(IndAssembly assembly, Mat *J);
 /* Whether the matrices of the linear solves multiply by PETSc's inode kernel (-jac_inodes; off by default). */
 PetscBool      IndAssemblyJacobianInodes(IndAssembly assembly);
-/* Whether the Jacobian (and GAMG's coarse operators) are multiplied by block rows (-jac_block_products). */
+/* Whether the Jacobian, GAMG's coarse operators and its interpolations are multiplied by block rows
+   (-jac_block_products). */
 PetscBool      IndAssemblyJacobianBlockProducts(IndAssembly assembly);
 /* Floc = internal minus external forces, over local cells (Floc is zeroed first), from the committed
    history and the displacement Uloc (the constitutive update of every point, not stored); sets

@@ -76,5 +76,5 @@ PetscBool      IndSolverLoadOutOfReach(IndSolver solver, PetscReal *load);
 PetscErrorCode IndSolverRefreshFineSmoother(KSP ksp);
 /* Makes every operator and interpolation of a set-up multigrid (nothing for other preconditioners or before the
    first setup) multiply row by row, without PETSc's inode kernel, as the Jacobian does (-jac_inodes); with
-   blocks, the operators by their block rows (IndBlockMultInstall, -jac_block_products). */
+   blocks, by their block rows (IndBlockMultInstall, -jac_block_products). */
 PetscErrorCode IndSolverMultigridRowProducts(KSP ksp, PetscBool blocks);

@@ -245,7 +245,7 @@ PetscErrorCode IndAssemblyCreateMatrix(IndAssembly a, Mat *J)
   PetscCall(MatSetOption(*J, MAT_SUBSET_OFF_PROC_ENTRIES, PETSC_TRUE));
   PetscCall(MatSetOption(*J, MAT_NO_OFF_PROC_ZERO_ROWS, PETSC_TRUE));
   {
-    PetscBool cached = PETSC_TRUE, inodes = PETSC_FALSE, nodes = PETSC_TRUE;
+    PetscBool cached = PETSC_TRUE, inodes = PETSC_FALSE, blocks = PETSC_TRUE;
     PetscOptionsBegin(comm, NULL, IND_TITLE "Jacobian assembly", "Assembly");
     PetscCall(IndOptionsBool("-jac_cached_insert", "Add element matrices at cached positions (false: MatSetValues)",
       cached, &cached, NULL));
@@ -254,18 +254,15 @@ PetscErrorCode IndAssemblyCreateMatrix(IndAssembly a, Mat *J)
       &inodes, NULL));
     PetscCall(IndOptionsBool("-jac_block_products",
       "Products by block rows: a node's three rows of the Jacobian together, one column index per 3 x 3 block "
-      "(GAMG's coarse operators by their 6 x 6 blocks)", nodes, &nodes, NULL));
+      "(GAMG's coarse operators and interpolations by their 6 x 6 and 3 x 6 blocks)", blocks, &blocks, NULL));
     PetscOptionsEnd();
     /* PETSc's inode product reads a node's three rows side by side, in short runs the memory prefetch
        does not follow: on the machines measured (doc/performance.md) the plain row-by-row product was
        2.3 times faster, and the Krylov iterations are mostly products with this matrix. */
     if (aij) PetscCall(MatSetOption(*J, MAT_USE_INODES, inodes));
-    if (aij && !inodes && nodes) {
-      PetscBool installed;
-      PetscCall(IndBlockMultInstall(*J, &installed));
-    }
     a->inodes = inodes;
-    a->blocks = (PetscBool)(aij && !inodes && nodes);
+    a->blocks = (PetscBool)(aij && !inodes && blocks);
+    if (a->blocks) PetscCall(IndBlockMultInstall(*J, &a->blocks));
     PetscCall(IndMatInsertDestroy(&a->insert));
     a->J = *J;
     if (cached) PetscCall(IndMatInsertCreate(a->disc, *J, &a->insert));
