@@ -35,6 +35,8 @@ struct _p_IndPCReuse {
   IndRebuildCount  count;
   PetscBool        governed, fresh; /* of the solve under way */
   PetscInt         solves, builds;
+  PetscErrorCode (*fresh_hook)(KSP, void *); /* IndPCReuseSetFreshHook */
+  void            *fresh_ctx;
 };
 
 static PetscErrorCode IsMultigrid(KSP ksp, PetscBool *mg)
@@ -64,6 +66,10 @@ static PetscErrorCode PreSolve(KSP ksp, Vec b, Vec x, void *ctx)
   /* A multigrid kept on a matrix assembled again in place smooths with the old matrix's Jacobi diagonal and
      Chebyshev bounds, a smoother for another operator (IndSolverRefreshFineSmoother). */
   if (!r->fresh) PetscCall(IndSolverRefreshFineSmoother(ksp));
+  if (r->fresh && r->fresh_hook) { /* KSPSolve's own set-up then finds it done */
+    PetscCall(KSPSetUp(ksp));
+    PetscCall(r->fresh_hook(ksp, r->fresh_ctx));
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -102,6 +108,14 @@ PetscErrorCode IndPCReuseCreate(KSP ksp, PetscBool active, IndPCReuse *out)
   PetscCall(KSPSetPreSolve(ksp, PreSolve, r));
   PetscCall(KSPSetPostSolve(ksp, PostSolve, r));
   *out = r;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode IndPCReuseSetFreshHook(IndPCReuse r, PetscErrorCode (*fn)(KSP, void *), void *ctx)
+{
+  PetscFunctionBeginUser;
+  r->fresh_hook = fn;
+  r->fresh_ctx  = ctx;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -36,6 +36,9 @@ typedef struct _p_IndPCReuse *IndPCReuse;
    active false, or with a preconditioner other than a multigrid (a factorization kept would be a stale inverse),
    the rebuilds are left to SNES's lag; the finest smoother of a kept multigrid is refreshed either way. */
 PetscErrorCode IndPCReuseCreate(KSP ksp, PetscBool active, IndPCReuse *r);
+/* fn(ksp, ctx) on a multigrid built afresh by the rule, before the solve uses it (the multigrid is set up in the
+   pre-solve hook, then handed to fn): for what must be done to a new hierarchy's matrices. */
+PetscErrorCode IndPCReuseSetFreshHook(IndPCReuse r, PetscErrorCode (*fn)(KSP, void *), void *ctx);
 /* The next solve builds the preconditioner (after KSPReset, a restart). */
 PetscErrorCode IndPCReuseReset(IndPCReuse r);
 /* Solves, and builds of the preconditioner among them, under the rule so far. */

@@ -124,6 +124,16 @@ PetscErrorCode IndSolverMultigridRowProducts(KSP ksp, PetscBool blocks)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* A hierarchy built afresh gets the products of the Jacobian's before its first solve, not at the next Jacobian. */
+static PetscErrorCode FreshMultigrid(KSP ksp, void *ctx)
+{
+  IndSolver s = (IndSolver)ctx;
+
+  PetscFunctionBeginUser;
+  PetscCall(IndSolverMultigridRowProducts(ksp, IndAssemblyJacobianBlockProducts(s->assembly)));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscErrorCode FormJacobian(SNES snes, Vec U, Mat A, Mat P, void *ctx)
 {
   IndSolver s = (IndSolver)ctx;
@@ -310,6 +320,7 @@ PetscErrorCode IndSolverCreate(DM dm, IndAssembly assembly, IndBC bc, IndContact
     PetscCall(SNESGetOptionsPrefix(s->snes, &prefix));
     PetscCall(PetscOptionsHasName(NULL, prefix, "-snes_lag_preconditioner", &lag));
     PetscCall(IndPCReuseCreate(ksp, (PetscBool)!lag, &s->reuse));
+    if (!IndAssemblyJacobianInodes(assembly)) PetscCall(IndPCReuseSetFreshHook(s->reuse, FreshMultigrid, s));
   }
   if (contact) {
     /* rho from the stiffness of the undeformed body, before any condition touches its diagonal */
