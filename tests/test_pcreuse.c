@@ -1,5 +1,6 @@
 static const char help[] = "When Newton's multigrid is rebuilt (src/solvers/pcreuse.c): the rule's decisions on small\n"
-                           "sequences, its cost against every fixed lag in hindsight, and the rule on a real KSP.\n";
+                           "sequences, its cost against every fixed lag in hindsight, and the rule on a real KSP,\n"
+                           "with its hook on each multigrid built afresh.\n";
 
 #include "pcreuse.h"
 #include "unit_report.h"
@@ -104,10 +105,31 @@ static PetscErrorCode Assemble(Mat A, PetscReal shift)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* n solves, each after the matrix was assembled again with a slowly drifting shift; the rule's counts, and
-   whether every solve converged. */
+/* Calls of the fresh-hierarchy hook, and those that found the multigrid set up */
+typedef struct {
+  PetscInt calls, ready;
+} FreshCount;
+
+static PetscErrorCode CountFresh(KSP ksp, void *ctx)
+{
+  FreshCount *f      = (FreshCount *)ctx;
+  PetscInt    levels = 0;
+  PC          pc;
+  PetscBool   mg;
+
+  PetscFunctionBeginUser;
+  PetscCall(KSPGetPC(ksp, &pc));
+  PetscCall(PetscObjectTypeCompareAny((PetscObject)pc, &mg, PCMG, PCGAMG, ""));
+  if (mg) PetscCall(PCMGGetLevels(pc, &levels)); /* GAMG has none before its set-up */
+  f->calls++;
+  if (levels > 0) f->ready++;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* n solves, each after the matrix was assembled again with a slowly drifting shift; the rule's counts, whether
+   every solve converged, and the hook's calls. */
 static PetscErrorCode Sequence(PCType pctype, PetscBool active, PetscReal cost, PetscInt n, PetscInt *solves,
-                               PetscInt *builds, PetscBool *converged)
+                               PetscInt *builds, PetscBool *converged, FreshCount *fresh)
 {
   Mat        A;
   Vec        x, b;
@@ -128,6 +150,8 @@ static PetscErrorCode Sequence(PCType pctype, PetscBool active, PetscReal cost, 
   PetscCall(PCSetType(pc, pctype));
   PetscCall(KSPSetTolerances(ksp, 1e-8, PETSC_DEFAULT, PETSC_DEFAULT, 2000));
   PetscCall(IndPCReuseCreate(ksp, active, &r));
+  fresh->calls = fresh->ready = 0;
+  PetscCall(IndPCReuseSetFreshHook(r, CountFresh, fresh));
   *converged = PETSC_TRUE;
   for (PetscInt k = 0; k < n; ++k) {
     KSPConvergedReason reason;
@@ -149,27 +173,33 @@ static PetscErrorCode Sequence(PCType pctype, PetscBool active, PetscReal cost, 
 
 int main(int argc, char **argv)
 {
-  PetscInt  solves, builds;
-  PetscBool converged;
+  PetscInt   solves, builds;
+  PetscBool  converged;
+  FreshCount fresh;
 
   PetscFunctionBeginUser;
   PetscCall(PetscInitialize(&argc, &argv, NULL, help));
   PetscCallMPI(MPI_Comm_rank(PETSC_COMM_WORLD, &rank));
   DecisionChecks();
 
-  PetscCall(Sequence(PCGAMG, PETSC_TRUE, 15, 8, &solves, &builds, &converged));
+  PetscCall(Sequence(PCGAMG, PETSC_TRUE, 15, 8, &solves, &builds, &converged, &fresh));
   if (!rank) printf("GAMG, cost 15: %d solves, %d builds\n", (int)solves, (int)builds);
   Check("GAMG, cost 15: every solve converged", converged ? 0 : 1, 0);
   Check("GAMG, cost 15, drift 1e-4: 8 solves, built at the first only",
         (PetscReal)(PetscAbsInt(solves - 8) + PetscAbsInt(builds - 1)), 0);
-  PetscCall(Sequence(PCGAMG, PETSC_TRUE, 0, 8, &solves, &builds, &converged));
+  Check("GAMG, cost 15: the hook once, on a multigrid set up", (PetscReal)(PetscAbsInt(fresh.calls - 1) +
+        PetscAbsInt(fresh.ready - 1)), 0);
+  PetscCall(Sequence(PCGAMG, PETSC_TRUE, 0, 8, &solves, &builds, &converged, &fresh));
   Check("GAMG, cost 0: built for every solve, converged",
         (PetscReal)(PetscAbsInt(solves - 8) + PetscAbsInt(builds - 8) + (converged ? 0 : 1)), 0);
-  PetscCall(Sequence(PCBJACOBI, PETSC_TRUE, 15, 4, &solves, &builds, &converged));
-  Check("block Jacobi: not a multigrid, left to its caller", (PetscReal)(solves + builds + (converged ? 0 : 1)), 0);
-  PetscCall(Sequence(PCGAMG, PETSC_FALSE, 15, 4, &solves, &builds, &converged));
-  Check("GAMG, inactive (SNES's lag chosen): left to its caller", (PetscReal)(solves + builds + (converged ? 0 : 1)),
-        0);
+  Check("GAMG, cost 0: the hook at every build, on a multigrid set up",
+        (PetscReal)(PetscAbsInt(fresh.calls - 8) + PetscAbsInt(fresh.ready - 8)), 0);
+  PetscCall(Sequence(PCBJACOBI, PETSC_TRUE, 15, 4, &solves, &builds, &converged, &fresh));
+  Check("block Jacobi: not a multigrid, left to its caller",
+        (PetscReal)(solves + builds + fresh.calls + (converged ? 0 : 1)), 0);
+  PetscCall(Sequence(PCGAMG, PETSC_FALSE, 15, 4, &solves, &builds, &converged, &fresh));
+  Check("GAMG, inactive (SNES's lag chosen): left to its caller",
+        (PetscReal)(solves + builds + fresh.calls + (converged ? 0 : 1)), 0);
   PetscCall(PetscFinalize());
   return failures ? 1 : 0;
 }

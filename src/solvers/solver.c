@@ -156,7 +156,8 @@ static PetscErrorCode FormJacobian(SNES snes, Vec U, Mat A, Mat P, void *ctx)
     KSP ksp;
     PetscCall(SNESGetKSP(snes, &ksp));
     PetscCall(IndSolverRefreshFineSmoother(ksp));
-    /* a hierarchy made by the last solve multiplies without inodes from the next one on, as J does */
+    /* a hierarchy made by the last solve multiplies as J does from the next one on (one the rebuild rule makes gets
+       it before its first solve: FreshMultigrid) */
     if (!IndAssemblyJacobianInodes(s->assembly))
       PetscCall(IndSolverMultigridRowProducts(ksp, IndAssemblyJacobianBlockProducts(s->assembly)));
   }
