@@ -124,8 +124,9 @@ PetscErrorCode IndSolverMultigridRowProducts(KSP ksp, PetscBool blocks)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* A hierarchy built afresh gets the products of the Jacobian's before its first solve, not at the next Jacobian. */
-static PetscErrorCode FreshMultigrid(KSP ksp, void *ctx)
+/* The multigrid's matrices multiplied as the Jacobian is: after each Jacobian, and on a hierarchy the rebuild rule
+   builds afresh before its first solve (its hook), not only at the next Jacobian. */
+static PetscErrorCode MultigridAsJacobian(KSP ksp, void *ctx)
 {
   IndSolver s = (IndSolver)ctx;
 
@@ -156,10 +157,7 @@ static PetscErrorCode FormJacobian(SNES snes, Vec U, Mat A, Mat P, void *ctx)
     KSP ksp;
     PetscCall(SNESGetKSP(snes, &ksp));
     PetscCall(IndSolverRefreshFineSmoother(ksp));
-    /* a hierarchy made by the last solve multiplies as J does from the next one on (one the rebuild rule makes gets
-       it before its first solve: FreshMultigrid) */
-    if (!IndAssemblyJacobianInodes(s->assembly))
-      PetscCall(IndSolverMultigridRowProducts(ksp, IndAssemblyJacobianBlockProducts(s->assembly)));
+    if (!IndAssemblyJacobianInodes(s->assembly)) PetscCall(MultigridAsJacobian(ksp, s));
   }
   if (A != P) {
     PetscCall(MatAssemblyBegin(A, MAT_FINAL_ASSEMBLY));
@@ -321,7 +319,7 @@ PetscErrorCode IndSolverCreate(DM dm, IndAssembly assembly, IndBC bc, IndContact
     PetscCall(SNESGetOptionsPrefix(s->snes, &prefix));
     PetscCall(PetscOptionsHasName(NULL, prefix, "-snes_lag_preconditioner", &lag));
     PetscCall(IndPCReuseCreate(ksp, (PetscBool)!lag, &s->reuse));
-    if (!IndAssemblyJacobianInodes(assembly)) PetscCall(IndPCReuseSetFreshHook(s->reuse, FreshMultigrid, s));
+    if (!IndAssemblyJacobianInodes(assembly)) PetscCall(IndPCReuseSetFreshHook(s->reuse, MultigridAsJacobian, s));
   }
   if (contact) {
     /* rho from the stiffness of the undeformed body, before any condition touches its diagonal */
