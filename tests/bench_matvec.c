@@ -2,8 +2,9 @@ static const char help[] =
   "Throughput of the matrix-vector product that bounds a Krylov iteration (doc/performance.md): the 27-node\n"
   "pattern of a Q1 box of n^3 cells in 3 x 3 blocks, as the Jacobian of the plastic cube stores it, multiplied\n"
   "as AIJ with PETSc's inode kernel (rows of a node side by side), as AIJ row by row (-jac_inodes 0), as AIJ by\n"
-  "block rows (the Jacobian's choice, -jac_block_products: with the CPU's vector units and with portable loops)\n"
-  "and as BAIJ with 3 x 3 blocks, beside a streaming read of the AIJ arrays. Prints one table; not a test.\n"
+  "block rows (the Jacobian's choice, -jac_block_products: with the CPU's vector units and with portable loops;\n"
+  "in single precision as the multigrid reads it, -newton_pc_single) and as BAIJ with 3 x 3 blocks, beside a\n"
+  "streaming read of the AIJ arrays. Prints one table; not a test.\n"
   "  -n n         cells per edge (default 64: 823,875 dofs)\n"
   "  -repeat r    products timed (the fastest is reported; default 10)\n";
 
@@ -62,8 +63,8 @@ int main(int argc, char **argv)
   const PetscInt    *ia, *ja;
   const PetscScalar *a;
   PetscBool          done;
-  PetscLogDouble     t0, t1, inode, rows, blocks, grouped[2], read = 1e30;
-  PetscReal          diff[4], sum = 0;
+  PetscLogDouble     t0, t1, inode, rows, blocks, grouped[2], single[2], read = 1e30;
+  PetscReal          diff[6], sum = 0;
   PetscBool          installed;
 
   PetscCall(PetscInitialize(&argc, &argv, NULL, help));
@@ -93,6 +94,13 @@ int main(int argc, char **argv)
     PetscCall(VecAXPY(z, -1, y));
     PetscCall(VecNorm(z, NORM_INFINITY, &diff[2 + k]));
   }
+  PetscCall(IndBlockMultSetSingle(D, PETSC_TRUE, NULL));
+  for (int k = 0; k < 2; ++k) {
+    PetscCall(IndBlockMultUseVectorUnits(D, (PetscBool)(k == 0)));
+    PetscCall(Product(D, x, z, repeat, &single[k]));
+    PetscCall(VecAXPY(z, -1, y));
+    PetscCall(VecNorm(z, NORM_INFINITY, &diff[4 + k]));
+  }
   PetscCall(MatGetRowIJ(A, 0, PETSC_FALSE, PETSC_FALSE, &nr, &ia, &ja, &done));
   PetscCheck(done, PETSC_COMM_SELF, PETSC_ERR_SUP, "no row structure");
   PetscCall(MatSeqAIJGetArrayRead(A, &a));
@@ -116,9 +124,10 @@ int main(int argc, char **argv)
     const double nnz = (double)ia[nr], aij = nnz * (sizeof(PetscScalar) + sizeof(PetscInt));
     PetscCall(PetscPrintf(PETSC_COMM_SELF,
                           "n %" PetscInt_FMT ", %" PetscInt_FMT " dofs, %.0f entries, AIJ arrays %.0f MB "
-                          "(products agree to %.1e, %.1e, %.1e and %.1e; checksum %g)\n",
+                          "(products agree to %.1e, %.1e, %.1e and %.1e; in single precision to %.1e and %.1e; "
+                          "checksum %g)\n",
                           n, nr, nnz, aij / 1e6, (double)diff[0], (double)diff[1], (double)diff[2], (double)diff[3],
-                          (double)sum));
+                          (double)diff[4], (double)diff[5], (double)sum));
     PetscCall(PetscPrintf(PETSC_COMM_SELF, "| product | s | GB/s of the AIJ arrays |\n|---|---|---|\n"));
     PetscCall(PetscPrintf(PETSC_COMM_SELF, "| AIJ, inode kernel (PETSc's default) | %.4f | %.2f |\n", inode,
                           aij / inode / 1e9));
@@ -128,6 +137,10 @@ int main(int argc, char **argv)
                           grouped[0], aij / grouped[0] / 1e9));
     PetscCall(PetscPrintf(PETSC_COMM_SELF, "| AIJ, by block rows, portable loops | %.4f | %.2f |\n", grouped[1],
                           aij / grouped[1] / 1e9));
+    PetscCall(PetscPrintf(PETSC_COMM_SELF, "| AIJ, by block rows, single precision, vector units | %.4f | %.2f |\n",
+                          single[0], aij / single[0] / 1e9));
+    PetscCall(PetscPrintf(PETSC_COMM_SELF, "| AIJ, by block rows, single precision, portable loops | %.4f | %.2f |\n",
+                          single[1], aij / single[1] / 1e9));
     PetscCall(PetscPrintf(PETSC_COMM_SELF, "| BAIJ, 3 x 3 blocks | %.4f | %.2f |\n", blocks,
                           aij / blocks / 1e9));
     PetscCall(PetscPrintf(PETSC_COMM_SELF, "| the AIJ arrays read, no product | %.4f | %.2f |\n", read,

@@ -2,7 +2,9 @@ static const char help[] =
   "Products by block rows (IndBlockMultInstall: A x, w + A x, A^T x) against PETSc's own products of the same\n"
   "matrix: 3 x 3 blocks (a Q1 box's node pattern), 6 x 6, 3 x 6 (GAMG's interpolation) and 5 x 5 blocks, with\n"
   "the vector units and with the portable loops, a pattern that stops being made of blocks (multiplied row by\n"
-  "row), and empty block rows. Parallel: the diagonal block.\n"
+  "row), and empty block rows. Parallel: the diagonal block. In single precision (IndBlockMultSetSingle and the\n"
+  "operator of IndBlockMultCreateSingleOperator): within float rounding of the double products, not equal to them,\n"
+  "following every change of the values, and leaving the matrix's own products in double.\n"
   "  -n n   nodes per edge of the box (default 7)\n";
 
 #include <petscmat.h>
@@ -143,6 +145,99 @@ static PetscErrorCode Case(const char *name, PetscInt n, PetscInt rbs, PetscInt 
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Single-precision products of one case: within float rounding of PETSc's (and not equal: the copy is read), again
+   after each way the values change (assembly, scaling, zeroed rows and columns), with vector units and loops. */
+static PetscErrorCode SingleCase(const char *name, PetscInt n, PetscInt rbs, PetscInt cbs, PetscBool *ok)
+{
+  Mat       A, B;
+  PetscBool installed, set, blocks;
+  PetscReal diff[5], lo = PETSC_MAX_REAL, hi = 0;
+  PetscInt  rstart, row;
+
+  PetscFunctionBeginUser;
+  PetscCall(BoxMatrix(PETSC_COMM_WORLD, n, rbs, cbs, -1, &A));
+  PetscCall(BoxMatrix(PETSC_COMM_WORLD, n, rbs, cbs, -1, &B));
+  PetscCall(IndBlockMultInstall(A, &installed));
+  PetscCall(IndBlockMultSetSingle(A, PETSC_TRUE, &set));
+  PetscCall(Compare(A, B, &diff[0], &blocks));
+  PetscCall(IndBlockMultUseVectorUnits(A, PETSC_FALSE));
+  PetscCall(Compare(A, B, &diff[1], &blocks));
+  PetscCall(IndBlockMultUseVectorUnits(A, PETSC_TRUE));
+  /* new values: assembled again (one entry changed on each rank), scaled, rows and columns zeroed */
+  PetscCall(MatGetOwnershipRange(A, &rstart, NULL));
+  PetscCall(MatSetValue(A, rstart, cbs * (rstart / rbs), 100.0, ADD_VALUES)); /* in the node's own block */
+  PetscCall(MatSetValue(B, rstart, cbs * (rstart / rbs), 100.0, ADD_VALUES));
+  PetscCall(MatAssemblyBegin(A, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(A, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyBegin(B, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(B, MAT_FINAL_ASSEMBLY));
+  PetscCall(Compare(A, B, &diff[2], &blocks));
+  PetscCall(MatScale(A, 3.0));
+  PetscCall(MatScale(B, 3.0));
+  PetscCall(Compare(A, B, &diff[3], &blocks));
+  if (rbs == cbs) {
+    row = rstart + 1;
+    PetscCall(MatZeroRowsColumns(A, 1, &row, 7.0, NULL, NULL));
+    PetscCall(MatZeroRowsColumns(B, 1, &row, 7.0, NULL, NULL));
+  }
+  PetscCall(Compare(A, B, &diff[4], &blocks));
+  for (int k = 0; k < 5; ++k) {
+    lo = PetscMin(lo, diff[k]);
+    hi = PetscMax(hi, diff[k]);
+  }
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD,
+    "%s in single precision: set %d, by blocks %d, differences %.1e (vector) %.1e (loops), after new values "
+    "%.1e (assembly) %.1e (scaled) %.1e (rows zeroed)\n", name, (int)set, (int)blocks, (double)diff[0],
+    (double)diff[1], (double)diff[2], (double)diff[3], (double)diff[4]));
+  /* float rounding is 6e-8 an entry; a copy left stale by new values would differ by O(1) */
+  *ok = (PetscBool)(*ok && installed && set && blocks && lo > 1e-12 && hi < 1e-6);
+  PetscCall(MatDestroy(&B));
+  PetscCall(MatDestroy(&A));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The single-precision operator of a matrix: its products within float rounding of the matrix's, which stay in
+   double (equal to a copy's to round-off of the same order) before and after. */
+static PetscErrorCode SingleOperatorCase(PetscInt n, PetscBool *ok)
+{
+  Mat       A, B, S;
+  Vec       x, y, z;
+  PetscBool installed;
+  PetscReal d[3], nz;
+
+  PetscFunctionBeginUser;
+  PetscCall(BoxMatrix(PETSC_COMM_WORLD, n, 3, 3, -1, &A));
+  PetscCall(BoxMatrix(PETSC_COMM_WORLD, n, 3, 3, -1, &B));
+  PetscCall(IndBlockMultInstall(A, &installed));
+  PetscCall(IndBlockMultCreateSingleOperator(A, &S));
+  PetscCall(MatCreateVecs(A, &x, &y));
+  PetscCall(VecDuplicate(y, &z));
+  PetscCall(FillCos(x, 1));
+  PetscCall(MatMult(B, x, z));
+  PetscCall(VecNorm(z, NORM_2, &nz));
+  PetscCall(MatMult(A, x, y));
+  PetscCall(VecAXPY(y, -1.0, z));
+  PetscCall(VecNorm(y, NORM_2, &d[0]));
+  PetscCall(MatMult(S, x, y));
+  PetscCall(VecAXPY(y, -1.0, z));
+  PetscCall(VecNorm(y, NORM_2, &d[1]));
+  PetscCall(MatMult(A, x, y));
+  PetscCall(VecAXPY(y, -1.0, z));
+  PetscCall(VecNorm(y, NORM_2, &d[2]));
+  for (int k = 0; k < 3; ++k) d[k] /= nz;
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD,
+    "single-precision operator: matrix %.1e, operator %.1e, matrix after it %.1e from PETSc's product\n",
+    (double)d[0], (double)d[1], (double)d[2]));
+  *ok = (PetscBool)(*ok && installed && d[0] < 1e-14 && d[2] < 1e-14 && d[1] > 1e-12 && d[1] < 1e-6);
+  PetscCall(VecDestroy(&z));
+  PetscCall(VecDestroy(&y));
+  PetscCall(VecDestroy(&x));
+  PetscCall(MatDestroy(&S));
+  PetscCall(MatDestroy(&B));
+  PetscCall(MatDestroy(&A));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 int main(int argc, char **argv)
 {
   PetscInt  n  = 7;
@@ -187,6 +282,11 @@ int main(int argc, char **argv)
     PetscCall(MatDestroy(&B));
     PetscCall(MatDestroy(&A));
   }
+  PetscCall(SingleCase("3 x 3 blocks", n, 3, 3, &ok));
+  PetscCall(SingleCase("6 x 6 blocks", n, 6, 6, &ok));
+  PetscCall(SingleCase("3 x 6 blocks", n, 3, 6, &ok));
+  PetscCall(SingleCase("5 x 5 blocks", n, 5, 5, &ok));
+  PetscCall(SingleOperatorCase(n, &ok));
   PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s\n", ok ? "all block products agree" : "FAILED"));
   PetscCall(PetscFinalize());
   return ok ? 0 : 1;

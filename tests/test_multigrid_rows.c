@@ -1,7 +1,10 @@
 static const char help[] =
   "A multigrid whose coarse operators and interpolations multiply row by row (IndSolverMultigridRowProducts)\n"
   "solves as before, keeps doing so through the numeric refresh of its coarse levels, and uses no inodes there;\n"
-  "its coarse operators multiply by their 6 x 6 block rows (IndBlockMultInstall).\n";
+  "its coarse operators multiply by their 6 x 6 block rows (IndBlockMultInstall). In single precision\n"
+  "(-newton_pc_single): every coarse operator and interpolation reads single precision, the finest smoother and\n"
+  "residual multiply by the Jacobian's single-precision operator, and the solve takes the same iterations (one\n"
+  "more at most) to the same solution.\n";
 
 #include "solver_test.h"
 #include "ind_blockmult.h"
@@ -69,6 +72,34 @@ static PetscErrorCode CoarseByBlocks(KSP ksp, PetscInt *count)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Coarse operators above the coarsest and interpolations reading single precision, on every rank; and whether the
+   finest smoother's operator is S */
+static PetscErrorCode CoarseSingle(KSP ksp, Mat S, PetscInt *count, PetscBool *fine)
+{
+  PC       pc;
+  PetscInt levels;
+
+  PetscFunctionBeginUser;
+  *count = 0;
+  PetscCall(KSPGetPC(ksp, &pc));
+  PetscCall(PCMGGetLevels(pc, &levels));
+  for (PetscInt l = 1; l < levels; ++l) {
+    KSP       smoother;
+    Mat       M[2];
+    PetscBool single;
+    PetscCall(PCMGGetSmoother(pc, l, &smoother));
+    PetscCall(KSPGetOperators(smoother, &M[0], NULL));
+    PetscCall(PCMGGetInterpolation(pc, l, &M[1]));
+    if (l == levels - 1) *fine = (PetscBool)(M[0] == S);
+    for (int k = (l == levels - 1); k < 2; ++k) {
+      PetscCall(IndBlockMultGetSingle(M[k], &single));
+      PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &single, 1, MPIU_BOOL, MPI_LAND, PetscObjectComm((PetscObject)ksp)));
+      *count += single;
+    }
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscErrorCode RelativeDifference(Vec x, Vec y, PetscReal *d)
 {
   Vec       e;
@@ -91,9 +122,10 @@ int main(int argc, char **argv)
   PC        pc;
   Mat       J   = NULL;
   Vec       b, x, xref, Uloc;
-  PetscInt  its[3], before, after, levels, blocks[2];
-  PetscReal d[2];
-  PetscBool ok;
+  Mat       S;
+  PetscInt  its[5], before, after, levels, blocks[2], single[2];
+  PetscReal d[4];
+  PetscBool ok, fine[2];
 
   PetscFunctionBeginUser;
   PetscCall(PetscInitialize(&argc, &argv, NULL, help));
@@ -116,7 +148,7 @@ int main(int argc, char **argv)
   PetscCall(CoarseInodes(ksp, &before));
 
   /* the same hierarchy, row by row and its coarse operators by block rows */
-  PetscCall(IndSolverMultigridRowProducts(ksp, PETSC_TRUE));
+  PetscCall(IndSolverMultigridRowProducts(ksp, PETSC_TRUE, NULL));
   PetscCall(KSPSetReusePreconditioner(ksp, PETSC_TRUE));
   PetscCall(SolveCounted(ksp, b, x, &its[1]));
   PetscCall(RelativeDifference(x, xref, &d[0]));
@@ -131,6 +163,25 @@ int main(int argc, char **argv)
   PetscCall(CoarseInodes(ksp, &after));
   PetscCall(CoarseByBlocks(ksp, &blocks[1]));
 
+  /* single precision: on the set-up hierarchy, then through a refresh of its coarse levels */
+  PetscCall(IndBlockMultCreateSingleOperator(J, &S));
+  PetscCall(IndSolverMultigridRowProducts(ksp, PETSC_TRUE, S));
+  PetscCall(KSPSetReusePreconditioner(ksp, PETSC_TRUE));
+  PetscCall(SolveCounted(ksp, b, x, &its[3]));
+  PetscCall(RelativeDifference(x, xref, &d[2]));
+  PetscCall(CoarseSingle(ksp, S, &single[0], &fine[0]));
+  PetscCall(KSPSetReusePreconditioner(ksp, PETSC_FALSE));
+  PetscCall(KSPSetUp(ksp));
+  PetscCall(IndSolverMultigridRowProducts(ksp, PETSC_TRUE, S));
+  PetscCall(SolveCounted(ksp, b, x, &its[4]));
+  PetscCall(RelativeDifference(x, xref, &d[3]));
+  PetscCall(CoarseSingle(ksp, S, &single[1], &fine[1]));
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD,
+    "single precision: Krylov iterations %" PetscInt_FMT " and %" PetscInt_FMT " (refreshed); solutions differ by "
+    "%.2e and %.2e; coarse operators and interpolations in single precision %" PetscInt_FMT " and %" PetscInt_FMT
+    "; finest smoother on the single-precision operator %d and %d\n", its[3], its[4], (double)d[2], (double)d[3],
+    single[0], single[1], (int)fine[0], (int)fine[1]));
+  PetscCall(MatDestroy(&S));
   PetscCall(PetscPrintf(PETSC_COMM_WORLD,
     "%" PetscInt_FMT " levels; Krylov iterations: fresh %" PetscInt_FMT ", row by row %" PetscInt_FMT
     ", refreshed %" PetscInt_FMT "; solutions differ by %.2e and %.2e; inode groups on the coarse operators %"
@@ -139,7 +190,9 @@ int main(int argc, char **argv)
     after, blocks[0], blocks[1]));
   ok = (PetscBool)(levels >= 3 && its[0] > 0 && its[1] == its[0] && its[2] == its[0] && d[0] < 1e-10 &&
                    d[1] < 1e-10 && before > 0 && after == 0 && blocks[0] == 2 * levels - 3 &&
-                   blocks[1] == 2 * levels - 3);
+                   blocks[1] == 2 * levels - 3 && PetscAbsInt(its[3] - its[0]) <= 1 &&
+                   PetscAbsInt(its[4] - its[0]) <= 1 && d[2] < 1e-8 && d[3] < 1e-8 && single[0] == 2 * levels - 3 &&
+                   single[1] == 2 * levels - 3 && fine[0] && fine[1]);
   PetscCall(DMRestoreLocalVector(IndAppGetDM(app), &Uloc));
   PetscCall(VecDestroy(&x));
   PetscCall(VecDestroy(&xref));

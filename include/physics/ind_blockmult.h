@@ -23,3 +23,15 @@ PetscErrorCode IndBlockMultUseVectorUnits(Mat A, PetscBool use);
 /* Whether the last product of A (its diagonal block) ran by block rows: false before the first product, without
    the product installed, or when the pattern is not made of whole blocks. */
 PetscErrorCode IndBlockMultActive(Mat A, PetscBool *active);
+/* Single precision for a preconditioner's matrices (doc/performance.md, "Single-precision preconditioner"): the
+   products of A read a single-precision copy of its local block's values (4 bytes an entry instead of 8; the sums
+   stay in double), made again whenever A's values have changed (PETSc's object state). For matrices that only a
+   preconditioner multiplies: GAMG's coarse operators and interpolations. Needs the products installed
+   (IndBlockMultInstall); *set (may be NULL) says whether they were there, in a real double-precision build. */
+PetscErrorCode IndBlockMultSetSingle(Mat A, PetscBool single, PetscBool *set);
+/* Whether the products of A read single precision (IndBlockMultSetSingle). */
+PetscErrorCode IndBlockMultGetSingle(Mat A, PetscBool *single);
+/* A shell S whose product is J's with J's local block read in single precision, for a smoother of J (J itself
+   keeps its double-precision products for the Krylov method). S holds a reference to J; its diagonal is J's.
+   Without products by block rows on J, S's products are J's own. */
+PetscErrorCode IndBlockMultCreateSingleOperator(Mat J, Mat *S);

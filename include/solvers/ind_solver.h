@@ -74,7 +74,9 @@ PetscBool      IndSolverLoadOutOfReach(IndSolver solver, PetscReal *load);
    before the first setup) set itself up again on its operator at its next use: after the operator
    changed in place while the preconditioner is reused, as on lagged Newton iterations. */
 PetscErrorCode IndSolverRefreshFineSmoother(KSP ksp);
-/* Makes every operator and interpolation of a set-up multigrid (nothing for other preconditioners or before the
-   first setup) multiply row by row, without PETSc's inode kernel, as the Jacobian does (-jac_inodes); with
-   blocks, by their block rows (IndBlockMultInstall, -jac_block_products). */
-PetscErrorCode IndSolverMultigridRowProducts(KSP ksp, PetscBool blocks);
+/* Makes every coarse operator and interpolation of a set-up multigrid (nothing for other preconditioners or before
+   the first setup) multiply row by row, without PETSc's inode kernel, as the Jacobian does (-jac_inodes); with
+   blocks, by their block rows (IndBlockMultInstall, -jac_block_products). With single (blocks only: a shell of
+   IndBlockMultCreateSingleOperator on the finest operator, or NULL), the coarse operators and interpolations read
+   their values in single precision and the finest smoother and residual multiply by single (-newton_pc_single). */
+PetscErrorCode IndSolverMultigridRowProducts(KSP ksp, PetscBool blocks, Mat single);

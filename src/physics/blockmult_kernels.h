@@ -13,14 +13,15 @@ typedef struct {
 
 /* Whether this CPU runs the vector kernels (x86-64 with AVX2 and FMA, double precision). */
 PetscBool IndBlockRowsCpuSimd(void);
-/* y = w + A x (w NULL: y = A x; w may be y); simd: the vector kernels where the block sizes have one. */
+/* y = w + A x (w NULL: y = A x; w may be y); simd: the vector kernels where the block sizes have one. The values
+   are a, or af where it is not NULL: a single-precision copy of a (same positions), the sums still in double. */
 void IndBlockRowsMult(const IndBlockRows *b, PetscBool simd, const PetscInt *ia, const PetscScalar *a,
-                      const PetscScalar *x, const PetscScalar *w, PetscScalar *y);
+                      const float *af, const PetscScalar *x, const PetscScalar *w, PetscScalar *y);
 /* y = A^T x, y of ncol entries. */
 void IndBlockRowsMultTranspose(const IndBlockRows *b, PetscBool simd, PetscInt ncol, const PetscInt *ia,
-                               const PetscScalar *a, const PetscScalar *x, PetscScalar *y);
+                               const PetscScalar *a, const float *af, const PetscScalar *x, PetscScalar *y);
 /* The same row by row, for any CSR pattern (m rows). */
-void IndRowsMult(PetscInt m, const PetscInt *ia, const PetscInt *ja, const PetscScalar *a, const PetscScalar *x,
-                 const PetscScalar *w, PetscScalar *y);
+void IndRowsMult(PetscInt m, const PetscInt *ia, const PetscInt *ja, const PetscScalar *a, const float *af,
+                 const PetscScalar *x, const PetscScalar *w, PetscScalar *y);
 void IndRowsMultTranspose(PetscInt m, PetscInt ncol, const PetscInt *ia, const PetscInt *ja, const PetscScalar *a,
-                          const PetscScalar *x, PetscScalar *y);
+                          const float *af, const PetscScalar *x, PetscScalar *y);

@@ -96,8 +96,10 @@ PetscErrorCode IndSolverRefreshFineSmoother(KSP ksp)
    was 1.4 to 2.4 times slower than the plain row-by-row product (doc/performance.md). The coarse levels cost a
    third of a V-cycle on the README's case. The option set after GAMG made a matrix holds for the numeric
    products that refresh it (MAT_REUSE_MATRIX) until the hierarchy is built anew. Their blocks (6 x 6, and 3 x 6 in
-   the interpolations) are read faster still by block rows, as the Jacobian's 3 x 3 ones (IndBlockMultInstall). */
-PetscErrorCode IndSolverMultigridRowProducts(KSP ksp, PetscBool blocks)
+   the interpolations) are read faster still by block rows, as the Jacobian's 3 x 3 ones (IndBlockMultInstall).
+   In single precision the products read about half the bytes; only the preconditioner sees them, and the Krylov
+   method's products with the Jacobian stay in double, so each solve meets its tolerance as before. */
+PetscErrorCode IndSolverMultigridRowProducts(KSP ksp, PetscBool blocks, Mat single)
 {
   PC       pc;
   PetscInt levels;
@@ -108,17 +110,27 @@ PetscErrorCode IndSolverMultigridRowProducts(KSP ksp, PetscBool blocks)
   for (PetscInt l = 1; l < levels; ++l) {
     KSP       smoother;
     Mat       M[3];
-    PetscBool aij, set;
+    PetscBool aij, set, finest = (PetscBool)(l == levels - 1);
     PetscCall(PCMGGetSmoother(pc, l, &smoother));
     PetscCall(KSPGetOperatorsSet(smoother, &set, NULL));
     if (!set) continue; /* a level not set up (yet, or since KSPReset) */
     PetscCall(KSPGetOperators(smoother, &M[0], &M[1]));
     PetscCall(PCMGGetInterpolation(pc, l, &M[2]));
+    if (finest && single) {
+      Mat of;
+      PetscCall(MatShellGetContext(single, &of));
+      /* its residual too: with the Jacobian read once for the Krylov method and once for the residual, each cycle
+         would read it in double and in single precision, more bytes than it saves (doc/performance.md) */
+      if (of == M[1] && M[0] != single) PetscCall(KSPSetOperators(smoother, single, M[1]));
+      if (of == M[1]) PetscCall(PCMGSetResidual(pc, l, PCMGResidualDefault, single));
+    }
     for (int k = 0; k < 3; ++k) {
       PetscBool installed;
+      if (finest && k < 2) continue; /* the Jacobian, or its single-precision operator */
       PetscCall(PetscObjectBaseTypeCompareAny((PetscObject)M[k], &aij, MATSEQAIJ, MATMPIAIJ, ""));
       if (aij) PetscCall(MatSetOption(M[k], MAT_USE_INODES, PETSC_FALSE));
       if (aij && blocks) PetscCall(IndBlockMultInstall(M[k], &installed));
+      if (aij && blocks) PetscCall(IndBlockMultSetSingle(M[k], (PetscBool)(single != NULL), NULL));
     }
   }
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -131,7 +143,7 @@ static PetscErrorCode MultigridAsJacobian(KSP ksp, void *ctx)
   IndSolver s = (IndSolver)ctx;
 
   PetscFunctionBeginUser;
-  PetscCall(IndSolverMultigridRowProducts(ksp, IndAssemblyJacobianBlockProducts(s->assembly)));
+  PetscCall(IndSolverMultigridRowProducts(ksp, IndAssemblyJacobianBlockProducts(s->assembly), s->Jsingle));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -231,6 +243,7 @@ PetscErrorCode IndSolverCreate(DM dm, IndAssembly assembly, IndBC bc, IndContact
   KSP          ksp;
   PC           pc;
   MatNullSpace rigid;
+  PetscBool    single = PETSC_TRUE;
 
   PetscFunctionBeginUser;
   PetscCall(PetscCalloc1(1, &s));
@@ -306,7 +319,12 @@ PetscErrorCode IndSolverCreate(DM dm, IndAssembly assembly, IndBC bc, IndContact
   PetscCall(IndOptionsInt("-newton_stall_its",
     "Newton fails after this many iterations without a 1% smaller residual (0: never)",
                           NULL, s->stall_its, &s->stall_its, NULL));
+  PetscCall(IndOptionsBool("-newton_pc_single",
+    "The multigrid's products in single precision: its smoothers, coarse operators and interpolations (the Krylov "
+    "method's stay in double; needs -jac_block_products)", single, &single, NULL));
   PetscOptionsEnd();
+  if (single && IndAssemblyJacobianBlockProducts(assembly))
+    PetscCall(IndBlockMultCreateSingleOperator(s->J, &s->Jsingle));
   PetscCheck(s->stall_its >= 0, PetscObjectComm((PetscObject)dm), PETSC_ERR_ARG_OUTOFRANGE,
     "-newton_stall_its must be >= 0, got %" PetscInt_FMT, s->stall_its);
   PetscCall(SNESSetConvergenceTest(s->snes, ConvergedUnlessStalled, s, NULL));
@@ -556,6 +574,7 @@ PetscErrorCode IndSolverDestroy(IndSolver *s)
   PetscCall(IndBorderedDestroy(&(*s)->border));
   PetscCall(IndPCReuseDestroy(&(*s)->reuse));
   PetscCall(SNESDestroy(&(*s)->snes));
+  PetscCall(MatDestroy(&(*s)->Jsingle));
   PetscCall(MatDestroy(&(*s)->J));
   PetscCall(VecDestroy(&(*s)->Uloc));
   PetscCall(VecDestroy(&(*s)->Floc));

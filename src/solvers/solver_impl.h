@@ -11,6 +11,7 @@ struct _p_IndSolver {
   IndContact   contact; /* NULL without an indenter */
   SNES         snes;
   Mat          J;
+  Mat          Jsingle; /* J's products in single precision, for the finest smoother (NULL: -newton_pc_single 0) */
   Vec          Uloc, Floc, Ubc;
   PetscReal    load_factor; /* of the step being solved */
   PetscInt     nfailed;     /* quadrature points, all ranks, whose return map failed in the last residual */
