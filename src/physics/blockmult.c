@@ -249,19 +249,27 @@ PetscErrorCode IndBlockMultUseVectorUnits(Mat J, PetscBool use)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode IndBlockMultActive(Mat J, PetscBool *active)
+/* The index of J's local block if a product has made one (NULL otherwise); makes none. */
+static PetscErrorCode ExistingIndex(Mat J, BlockIndex **ix)
 {
   Mat            A;
   PetscContainer c = NULL;
-  BlockIndex    *ix;
 
   PetscFunctionBegin;
-  *active = PETSC_FALSE;
+  *ix = NULL;
   PetscCall(LocalBlock(J, &A));
   if (A) PetscCall(PetscObjectQuery((PetscObject)A, IND_BLOCKMULT_KEY, (PetscObject *)&c));
-  if (!c) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCall(PetscContainerGetPointer(c, (void **)&ix));
-  *active = (PetscBool)(ix->built && ix->blocks);
+  if (c) PetscCall(PetscContainerGetPointer(c, (void **)ix));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode IndBlockMultActive(Mat J, PetscBool *active)
+{
+  BlockIndex *ix;
+
+  PetscFunctionBegin;
+  PetscCall(ExistingIndex(J, &ix));
+  *active = (PetscBool)(ix && ix->built && ix->blocks);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -305,17 +313,11 @@ PetscErrorCode IndBlockMultSetSingle(Mat J, PetscBool single, PetscBool *set)
 
 PetscErrorCode IndBlockMultGetSingle(Mat J, PetscBool *single)
 {
-  Mat            A;
-  PetscContainer c = NULL;
-  BlockIndex    *ix;
+  BlockIndex *ix;
 
   PetscFunctionBegin;
-  *single = PETSC_FALSE;
-  PetscCall(LocalBlock(J, &A));
-  if (A) PetscCall(PetscObjectQuery((PetscObject)A, IND_BLOCKMULT_KEY, (PetscObject *)&c));
-  if (!c) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCall(PetscContainerGetPointer(c, (void **)&ix));
-  *single = ix->single;
+  PetscCall(ExistingIndex(J, &ix));
+  *single = (PetscBool)(ix && ix->single);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
