@@ -18,7 +18,11 @@ PetscBool IndBlockRowsCpuSimd(void)
 
 /* Values from the matrix's own array (af NULL) or from its single-precision copy (af, same positions). The loops
    below take single as a constant and are inlined once for each, so that neither reads a branch per value. */
-#define IND_INLINE static inline __attribute__((always_inline))
+#if defined(__GNUC__) || defined(__clang__)
+  #define IND_INLINE static inline __attribute__((always_inline))
+#else
+  #define IND_INLINE static inline
+#endif
 
 IND_INLINE PetscScalar Value(const PetscScalar *a, const float *af, PetscInt k, const int single)
 {
