@@ -121,8 +121,10 @@ PetscErrorCode IndSolverMultigridRowProducts(KSP ksp, PetscBool blocks, Mat sing
       PetscCall(MatShellGetContext(single, &of));
       /* its residual too: with the Jacobian read once for the Krylov method and once for the residual, each cycle
          would read it in double and in single precision, more bytes than it saves (doc/performance.md) */
-      if (of == M[1] && M[0] != single) PetscCall(KSPSetOperators(smoother, single, M[1]));
-      if (of == M[1]) PetscCall(PCMGSetResidual(pc, l, PCMGResidualDefault, single));
+      if (of == M[1]) {
+        if (M[0] != single) PetscCall(KSPSetOperators(smoother, single, M[1]));
+        PetscCall(PCMGSetResidual(pc, l, PCMGResidualDefault, single));
+      }
     }
     for (int k = 0; k < 3; ++k) {
       PetscBool installed;
