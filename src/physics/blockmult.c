@@ -36,26 +36,6 @@ static PetscErrorCode BlockIndexDestroy(void *ctx)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Whether rows rbs i .. rbs i + rbs - 1 have one column pattern made of whole blocks (c .. c + cbs - 1, c a
-   multiple of cbs). */
-static PetscBool GroupFits(const PetscInt *ia, const PetscInt *ja, PetscInt rbs, PetscInt cbs, PetscInt i)
-{
-  const PetscInt s = ia[rbs * i], len = ia[rbs * i + 1] - s;
-
-  if (len % cbs) return PETSC_FALSE;
-  for (PetscInt r = 1; r < rbs; ++r)
-    if (ia[rbs * i + r + 1] - ia[rbs * i + r] != len) return PETSC_FALSE;
-  for (PetscInt k = 0; k < len; k += cbs) {
-    if (ja[s + k] % cbs) return PETSC_FALSE;
-    for (PetscInt d = 1; d < cbs; ++d)
-      if (ja[s + k + d] != ja[s + k] + d) return PETSC_FALSE;
-  }
-  for (PetscInt r = 1; r < rbs; ++r)
-    for (PetscInt k = 0; k < len; ++k)
-      if (ja[s + r * len + k] != ja[s + k]) return PETSC_FALSE;
-  return PETSC_TRUE;
-}
-
 static PetscErrorCode Build(Mat A, BlockIndex *ix)
 {
   PetscInt        m, n, nr, rbs, cbs;
@@ -76,7 +56,7 @@ static PetscErrorCode Build(Mat A, BlockIndex *ix)
   if (!ix->blocks) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(MatGetRowIJ(A, 0, PETSC_FALSE, PETSC_FALSE, &nr, &ia, &ja, &done));
   PetscCheck(done && nr == m, PETSC_COMM_SELF, PETSC_ERR_PLIB, "No row structure of a matrix block");
-  for (PetscInt i = 0; i < ix->rows.ngroup && ix->blocks; ++i) ix->blocks = GroupFits(ia, ja, rbs, cbs, i);
+  for (PetscInt i = 0; i < ix->rows.ngroup && ix->blocks; ++i) ix->blocks = IndBlockRowsGroupFits(ia, ja, rbs, cbs, i);
   if (ix->blocks) {
     PetscCall(PetscMalloc2(ix->rows.ngroup + 1, &ix->bi, ia[m] / (rbs * cbs) + 1, &ix->bj));
     ix->bi[0] = 0;

@@ -16,14 +16,28 @@ PetscBool IndBlockRowsCpuSimd(void)
 #endif
 }
 
+/* Whether rows rbs i .. rbs i + rbs - 1 have one column pattern made of whole blocks (c .. c + cbs - 1, c a
+   multiple of cbs). */
+PetscBool IndBlockRowsGroupFits(const PetscInt *ia, const PetscInt *ja, PetscInt rbs, PetscInt cbs, PetscInt i)
+{
+  const PetscInt s = ia[rbs * i], len = ia[rbs * i + 1] - s;
+
+  if (len % cbs) return PETSC_FALSE;
+  for (PetscInt r = 1; r < rbs; ++r)
+    if (ia[rbs * i + r + 1] - ia[rbs * i + r] != len) return PETSC_FALSE;
+  for (PetscInt k = 0; k < len; k += cbs) {
+    if (ja[s + k] % cbs) return PETSC_FALSE;
+    for (PetscInt d = 1; d < cbs; ++d)
+      if (ja[s + k + d] != ja[s + k] + d) return PETSC_FALSE;
+  }
+  for (PetscInt r = 1; r < rbs; ++r)
+    for (PetscInt k = 0; k < len; ++k)
+      if (ja[s + r * len + k] != ja[s + k]) return PETSC_FALSE;
+  return PETSC_TRUE;
+}
+
 /* Values from the matrix's own array (af NULL) or from its single-precision copy (af, same positions). The loops
    below take single as a constant and are inlined once for each, so that neither reads a branch per value. */
-#if defined(__GNUC__) || defined(__clang__)
-  #define IND_INLINE static inline __attribute__((always_inline))
-#else
-  #define IND_INLINE static inline
-#endif
-
 IND_INLINE PetscScalar Value(const PetscScalar *a, const float *af, PetscInt k, const int single)
 {
   return single ? (PetscScalar)af[k] : a[k];

@@ -4,6 +4,13 @@
    the blocks of each group. */
 #include <petscsys.h>
 
+/* Inlined into each caller, so that block sizes and flags passed as constants unroll the loops. */
+#if defined(__GNUC__) || defined(__clang__)
+  #define IND_INLINE static inline __attribute__((always_inline))
+#else
+  #define IND_INLINE static inline
+#endif
+
 typedef struct {
   PetscInt        rbs, cbs; /* rows per group, columns per block */
   PetscInt        ngroup;
@@ -11,6 +18,9 @@ typedef struct {
   const PetscInt *bj; /* a block's first column */
 } IndBlockRows;
 
+/* Whether rows rbs i .. rbs i + rbs - 1 of the CSR (ia, ja) have one column pattern made of whole blocks of cbs
+   columns (c .. c + cbs - 1, c a multiple of cbs). */
+PetscBool IndBlockRowsGroupFits(const PetscInt *ia, const PetscInt *ja, PetscInt rbs, PetscInt cbs, PetscInt i);
 /* Whether this CPU runs the vector kernels (x86-64 with AVX2 and FMA, double precision). */
 PetscBool IndBlockRowsCpuSimd(void);
 /* y = w + A x (w NULL: y = A x; w may be y); simd: the vector kernels where the block sizes have one. The values

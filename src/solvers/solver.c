@@ -6,6 +6,7 @@
 #include "linesearch.h"
 #include "pcreuse.h"
 #include "ind_blockmult.h"
+#include "ind_galerkin.h"
 
 /* The free rows see the prescribed values, not U's, on constrained dofs: the residual of a free row
    then does not depend on constrained entries of U, so the Jacobian with those rows and columns
@@ -245,7 +246,7 @@ PetscErrorCode IndSolverCreate(DM dm, IndAssembly assembly, IndBC bc, IndContact
   KSP          ksp;
   PC           pc;
   MatNullSpace rigid;
-  PetscBool    single = PETSC_TRUE;
+  PetscBool    single = PETSC_TRUE, galerkin = PETSC_TRUE;
 
   PetscFunctionBeginUser;
   PetscCall(PetscCalloc1(1, &s));
@@ -324,7 +325,11 @@ PetscErrorCode IndSolverCreate(DM dm, IndAssembly assembly, IndBC bc, IndContact
   PetscCall(IndOptionsBool("-newton_pc_single",
     "The multigrid's products in single precision: its smoothers, coarse operators and interpolations (the Krylov "
     "method's stay in double; needs -jac_block_products)", single, &single, NULL));
+  PetscCall(IndOptionsBool("-newton_pc_galerkin_blocks",
+    "The multigrid's coarse operators P^T A P computed by blocks, not by PETSc's AIJ product (the same operators, "
+    "faster and in less memory; doc/performance.md)", galerkin, &galerkin, NULL));
   PetscOptionsEnd();
+  if (galerkin) PetscCall(IndGalerkinInstall(s->J));
   if (single && IndAssemblyJacobianBlockProducts(assembly))
     PetscCall(IndBlockMultCreateSingleOperator(s->J, &s->Jsingle));
   PetscCheck(s->stall_its >= 0, PetscObjectComm((PetscObject)dm), PETSC_ERR_ARG_OUTOFRANGE,
