@@ -29,3 +29,16 @@ static inline PetscErrorCode SolveCounted(KSP ksp, Vec b, Vec x, PetscInt *its)
   if (reason <= 0) *its = -1;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
+
+/* The app's conditions set up and its Jacobian at zero displacement, with the conditions applied; *Uloc (zero) is the
+   DM's local vector, to be given back with DMRestoreLocalVector. */
+static inline PetscErrorCode SolverTestJacobianAtZero(IndApp app, Mat J, Vec *Uloc)
+{
+  PetscFunctionBeginUser;
+  PetscCall(IndBCSetUp(IndAppGetBC(app)));
+  PetscCall(DMGetLocalVector(IndAppGetDM(app), Uloc));
+  PetscCall(VecZeroEntries(*Uloc));
+  PetscCall(IndAssemblyJacobian(IndAppGetAssembly(app), *Uloc, J));
+  PetscCall(IndBCApplyJacobian(IndAppGetBC(app), J));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}

@@ -186,11 +186,7 @@ int main(int argc, char **argv)
   PetscCall(MatCreateVecs(J, &x, &b));
   PetscCall(VecDuplicate(x, &x2));
   PetscCall(VecSet(b, 1.0));
-  PetscCall(IndBCSetUp(IndAppGetBC(app)));
-  PetscCall(DMGetLocalVector(IndAppGetDM(app), &Uloc));
-  PetscCall(VecZeroEntries(Uloc));
-  PetscCall(IndAssemblyJacobian(IndAppGetAssembly(app), Uloc, J));
-  PetscCall(IndBCApplyJacobian(IndAppGetBC(app), J));
+  PetscCall(SolverTestJacobianAtZero(app, J, &Uloc));
   PetscCall(KSPSetOperators(ksp, J, J));
   PetscCall(SolveCounted(ksp, b, x, &its[0]));
   PetscCall(CoarseCopies(ksp, ours, &n[0], &by_blocks[0]));

@@ -109,11 +109,7 @@ int main(int argc, char **argv)
   PetscCall(MatCreateVecs(J, &x, &b));
   PetscCall(VecDuplicate(x, &xref));
   PetscCall(VecSet(b, 1.0));
-  PetscCall(IndBCSetUp(IndAppGetBC(app)));
-  PetscCall(DMGetLocalVector(IndAppGetDM(app), &Uloc));
-  PetscCall(VecZeroEntries(Uloc));
-  PetscCall(IndAssemblyJacobian(IndAppGetAssembly(app), Uloc, J));
-  PetscCall(IndBCApplyJacobian(IndAppGetBC(app), J));
+  PetscCall(SolverTestJacobianAtZero(app, J, &Uloc));
 
   /* a fresh hierarchy as PETSc makes it */
   PetscCall(KSPSetOperators(ksp, J, J));
