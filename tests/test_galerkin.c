@@ -70,13 +70,14 @@ static PetscErrorCode RandomPair(PetscInt n, PetscInt cbs, PetscRandom rnd, Mat 
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* The products of random matrices: d[0..3] the differences from PETSc's (P^T A P, again after A changed, A P, and
-   P^T A P with an interpolation of scalar columns), ok whether patterns, block sizes and routes were as expected */
-static PetscErrorCode RandomProducts(PetscReal d[4], PetscBool *ok)
+/* The products of random matrices: d[0..4] the differences from PETSc's (P^T A P, again after A changed, A P, P^T A P
+   with an interpolation of scalar columns, and with blocks of 4 columns), ok whether patterns, block sizes and
+   routes were as expected */
+static PetscErrorCode RandomProducts(PetscReal d[5], PetscBool *ok)
 {
   PetscRandom rnd;
-  Mat         A, A2, P, P1, C[2], D[2], E[2];
-  PetscBool   same[4], blocks[4];
+  Mat         A, A2, P, P1, C[2], D[2], E[2], F[2];
+  PetscBool   same[5], blocks[5];
   PetscInt    rbs, cbs;
 
   PetscFunctionBeginUser;
@@ -109,6 +110,18 @@ static PetscErrorCode RandomProducts(PetscReal d[4], PetscBool *ok)
   PetscCall(Compare(D[0], D[1], &d[2], &same[2]));
   PetscCall(IndGalerkinByBlocks(D[0], &blocks[2]));
 
+  /* blocks of 4 columns: the loops for any block size (3 x 6 and 6 x 6 have their own) */
+  PetscCall(MatDestroy(&P));
+  PetscCall(MatDestroy(&A2));
+  PetscCall(MatDestroy(&A));
+  PetscCall(RandomPair(40, 4, rnd, &A, &P));
+  PetscCall(MatDuplicate(A, MAT_COPY_VALUES, &A2));
+  PetscCall(IndGalerkinInstall(A));
+  PetscCall(MatPtAP(A, P, MAT_INITIAL_MATRIX, 2.0, &F[0]));
+  PetscCall(MatPtAP(A2, P, MAT_INITIAL_MATRIX, 2.0, &F[1]));
+  PetscCall(Compare(F[0], F[1], &d[4], &same[4]));
+  PetscCall(IndGalerkinByBlocks(F[0], &blocks[4]));
+
   /* an interpolation whose columns are not grouped: PETSc's product */
   PetscCall(MatDestroy(&P));
   PetscCall(MatDestroy(&A2));
@@ -121,17 +134,19 @@ static PetscErrorCode RandomProducts(PetscReal d[4], PetscBool *ok)
   PetscCall(Compare(E[0], E[1], &d[3], &same[3]));
   PetscCall(IndGalerkinByBlocks(E[0], &blocks[3]));
 
-  *ok = (PetscBool)(same[0] && same[1] && same[2] && same[3] && blocks[0] && !blocks[1] && blocks[2] && !blocks[3] &&
-                    rbs == 6 && cbs == 6);
+  *ok = (PetscBool)(same[0] && same[1] && same[2] && same[3] && same[4] && blocks[0] && !blocks[1] && blocks[2] &&
+                    !blocks[3] && blocks[4] && rbs == 6 && cbs == 6);
   PetscCall(PetscPrintf(PETSC_COMM_WORLD,
     "random blocks: P^T A P differs from PETSc's by %.2e (by blocks %d, PETSc's %d, block sizes %" PetscInt_FMT
-    " x %" PetscInt_FMT "), after A changed %.2e; A P %.2e (by blocks %d); scalar columns %.2e (by blocks %d); "
-    "same patterns %d %d %d %d\n", (double)d[0], (int)blocks[0], (int)blocks[1], rbs, cbs, (double)d[1], (double)d[2],
-    (int)blocks[2], (double)d[3], (int)blocks[3], (int)same[0], (int)same[1], (int)same[2], (int)same[3]));
+    " x %" PetscInt_FMT "), after A changed %.2e; A P %.2e (by blocks %d); 3 x 4 blocks %.2e (by blocks %d); scalar "
+    "columns %.2e (by blocks %d); same patterns %d %d %d %d %d\n", (double)d[0], (int)blocks[0], (int)blocks[1], rbs,
+    cbs, (double)d[1], (double)d[2], (int)blocks[2], (double)d[4], (int)blocks[4], (double)d[3], (int)blocks[3],
+    (int)same[0], (int)same[1], (int)same[2], (int)same[3], (int)same[4]));
   for (int k = 0; k < 2; ++k) {
     PetscCall(MatDestroy(&C[k]));
     PetscCall(MatDestroy(&D[k]));
     PetscCall(MatDestroy(&E[k]));
+    PetscCall(MatDestroy(&F[k]));
   }
   PetscCall(MatDestroy(&P1));
   PetscCall(MatDestroy(&A2));
@@ -172,13 +187,13 @@ int main(int argc, char **argv)
   MatNullSpace nsp;
   Vec          b, x, x2, Uloc;
   PetscInt     its[2], n[2], by_blocks[2];
-  PetscReal    d[4], dl = 0, dx;
+  PetscReal    d[5], dl = 0, dx;
   PetscBool    ok, same = PETSC_TRUE;
 
   PetscFunctionBeginUser;
   PetscCall(PetscInitialize(&argc, &argv, NULL, help));
   PetscCall(RandomProducts(d, &ok));
-  ok = (PetscBool)(ok && d[0] < 1e-13 && d[1] < 1e-13 && d[2] < 1e-13 && d[3] < 1e-13);
+  ok = (PetscBool)(ok && d[0] < 1e-13 && d[1] < 1e-13 && d[2] < 1e-13 && d[3] < 1e-13 && d[4] < 1e-13);
 
   /* the solver's multigrid on its Jacobian (products by blocks, the solver's default), then on a copy of it that has
      PETSc's products, with the interpolations the first set-up made */
