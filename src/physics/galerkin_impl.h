@@ -77,9 +77,11 @@ PetscErrorCode IndGalerkinCreateC(IndGalerkinPlan *pl, Mat A, Mat P, Mat C);
 PetscErrorCode IndGalerkinApPattern(IndGalerkinPlan *pl, const PetscInt *ia[2], const PetscInt *ja[2], PetscInt row,
                                     PetscInt *nap);
 void           IndGalerkinRowsNumeric(IndGalerkinPlan *pl, const PetscInt *ia[2], const PetscInt *ja[2],
-                                      const PetscScalar *av[2], PetscScalar *cd, PetscScalar *co, PetscLogDouble *flops);
+                                      const PetscScalar *av[2], PetscScalar *cd, PetscScalar *co,
+                                      PetscLogDouble *flops);
 void           IndGalerkinProductNumeric(IndGalerkinPlan *pl, const PetscInt *ia[2], const PetscInt *ja[2],
                                          const PetscScalar *av[2], PetscScalar *cd, PetscScalar *co,
                                          PetscLogDouble *flops);
-PetscScalar   *IndGalerkinOwnedBlock(const IndGalerkinPlan *pl, PetscScalar *cd, PetscScalar *co, PetscInt j, PetscInt k,
-                                     PetscInt *ld);
+/* Where block k of C's owned block row j sits in the diagonal (cd) or off-process (co) array; *ld its row stride */
+PetscScalar   *IndGalerkinOwnedBlock(const IndGalerkinPlan *pl, PetscScalar *cd, PetscScalar *co, PetscInt j,
+                                     PetscInt k, PetscInt *ld);
