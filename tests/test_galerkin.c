@@ -28,11 +28,40 @@ static PetscErrorCode Compare(Mat X, Mat Y, PetscReal *d, PetscBool *same_nz)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* A: n nodes a rank, 3 x 3 blocks, node i coupled to i - 2 .. i + 2 (across ranks); P: node i in aggregate i / 4 and,
-   for odd i, also in the next one, blocks of cbs columns (aggregates spread over the ranks as the nodes are) */
+/* P: n nodes a rank (a multiple of 4) of rbs rows; node i in aggregate i / 4 and, for odd i, also in the next one,
+   blocks of cbs columns (the aggregates spread over the ranks as the nodes are) */
+static PetscErrorCode RandomInterpolation(PetscInt n, PetscInt rbs, PetscInt cbs, PetscRandom rnd, Mat *P)
+{
+  PetscInt N, Na, rstart;
+
+  PetscFunctionBeginUser;
+  PetscCall(MatCreate(PETSC_COMM_WORLD, P));
+  PetscCall(MatSetSizes(*P, rbs * n, cbs * (n / 4), PETSC_DETERMINE, PETSC_DETERMINE));
+  PetscCall(MatSetBlockSizes(*P, rbs, cbs));
+  PetscCall(MatSetType(*P, MATAIJ));
+  PetscCall(MatSeqAIJSetPreallocation(*P, 2 * cbs, NULL));
+  PetscCall(MatMPIAIJSetPreallocation(*P, 2 * cbs, NULL, 2 * cbs, NULL));
+  PetscCall(MatGetSize(*P, &N, &Na));
+  PetscCall(MatGetOwnershipRange(*P, &rstart, NULL));
+  N /= rbs, Na /= cbs;
+  for (PetscInt i = rstart / rbs; i < rstart / rbs + n; ++i)
+    for (PetscInt a = i / 4; a <= PetscMin(Na - 1, i / 4 + (i % 2)); ++a) {
+      PetscScalar v[64];
+      PetscInt    r[8], c[8];
+      for (PetscInt k = 0; k < rbs; ++k) r[k] = rbs * i + k;
+      for (PetscInt k = 0; k < cbs; ++k) c[k] = cbs * a + k;
+      for (PetscInt k = 0; k < rbs * cbs; ++k) PetscCall(PetscRandomGetValue(rnd, &v[k]));
+      PetscCall(MatSetValues(*P, rbs, r, cbs, c, v, INSERT_VALUES));
+    }
+  PetscCall(MatAssemblyBegin(*P, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(*P, MAT_FINAL_ASSEMBLY));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* A: n nodes a rank, 3 x 3 blocks, node i coupled to i - 2 .. i + 2 (across ranks); P as RandomInterpolation's */
 static PetscErrorCode RandomPair(PetscInt n, PetscInt cbs, PetscRandom rnd, Mat *A, Mat *P)
 {
-  PetscInt N, na, Na, rstart;
+  PetscInt N, rstart;
 
   PetscFunctionBeginUser;
   PetscCall(MatCreateAIJ(PETSC_COMM_WORLD, 3 * n, 3 * n, PETSC_DETERMINE, PETSC_DETERMINE, 15, NULL, 15, NULL, A));
@@ -49,35 +78,18 @@ static PetscErrorCode RandomPair(PetscInt n, PetscInt cbs, PetscRandom rnd, Mat 
     }
   PetscCall(MatAssemblyBegin(*A, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(*A, MAT_FINAL_ASSEMBLY));
-
-  na = n / 4, Na = N / 4;
-  PetscCall(MatCreate(PETSC_COMM_WORLD, P));
-  PetscCall(MatSetSizes(*P, 3 * n, cbs * na, PETSC_DETERMINE, PETSC_DETERMINE));
-  PetscCall(MatSetBlockSizes(*P, 3, cbs));
-  PetscCall(MatSetType(*P, MATAIJ));
-  PetscCall(MatSeqAIJSetPreallocation(*P, 2 * cbs, NULL));
-  PetscCall(MatMPIAIJSetPreallocation(*P, 2 * cbs, NULL, 2 * cbs, NULL));
-  for (PetscInt i = rstart / 3; i < rstart / 3 + n; ++i)
-    for (PetscInt a = i / 4; a <= PetscMin(Na - 1, i / 4 + (i % 2)); ++a) {
-      PetscScalar v[18];
-      PetscInt    r[3] = {3 * i, 3 * i + 1, 3 * i + 2}, c[6];
-      for (PetscInt k = 0; k < cbs; ++k) c[k] = cbs * a + k;
-      for (int k = 0; k < 3 * cbs; ++k) PetscCall(PetscRandomGetValue(rnd, &v[k]));
-      PetscCall(MatSetValues(*P, 3, r, cbs, c, v, INSERT_VALUES));
-    }
-  PetscCall(MatAssemblyBegin(*P, MAT_FINAL_ASSEMBLY));
-  PetscCall(MatAssemblyEnd(*P, MAT_FINAL_ASSEMBLY));
+  PetscCall(RandomInterpolation(n, 3, cbs, rnd, P));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* The products of random matrices: d[0..4] the differences from PETSc's (P^T A P, again after A changed, A P, P^T A P
-   with an interpolation of scalar columns, and with blocks of 4 columns), ok whether patterns, block sizes and
-   routes were as expected */
-static PetscErrorCode RandomProducts(PetscReal d[5], PetscBool *ok)
+/* The products of random matrices: d[0..5] the differences from PETSc's (P^T A P, again after A changed, A P, P^T A P
+   with an interpolation of scalar columns, with blocks of 4 columns, and the next level's product of the first), ok
+   whether patterns, block sizes and routes were as expected */
+static PetscErrorCode RandomProducts(PetscReal d[6], PetscBool *ok)
 {
   PetscRandom rnd;
-  Mat         A, A2, P, P1, C[2], D[2], E[2], F[2];
-  PetscBool   same[5], blocks[5];
+  Mat         A, A2, P, P1, P2, C[2], D[2], E[2], F[2], G[2];
+  PetscBool   same[6], blocks[7];
   PetscInt    rbs, cbs;
 
   PetscFunctionBeginUser;
@@ -85,7 +97,7 @@ static PetscErrorCode RandomProducts(PetscReal d[5], PetscBool *ok)
   PetscCall(PetscRandomSetInterval(rnd, -1.0, 1.0));
   PetscCall(PetscRandomSetSeed(rnd, 7));
   PetscCall(PetscRandomSeed(rnd));
-  PetscCall(RandomPair(40, 6, rnd, &A, &P));
+  PetscCall(RandomPair(48, 6, rnd, &A, &P));
   PetscCall(MatDuplicate(A, MAT_COPY_VALUES, &A2)); /* a copy has PETSc's products */
   PetscCall(IndGalerkinInstall(A));
 
@@ -95,6 +107,14 @@ static PetscErrorCode RandomProducts(PetscReal d[5], PetscBool *ok)
   PetscCall(IndGalerkinByBlocks(C[0], &blocks[0]));
   PetscCall(IndGalerkinByBlocks(C[1], &blocks[1]));
   PetscCall(MatGetBlockSizes(C[0], &rbs, &cbs));
+
+  /* the next level: C's own products (6 x 6 blocks), against PETSc's of the copy's C */
+  PetscCall(RandomInterpolation(12, 6, 6, rnd, &P2));
+  PetscCall(MatPtAP(C[0], P2, MAT_INITIAL_MATRIX, 2.0, &G[0]));
+  PetscCall(MatPtAP(C[1], P2, MAT_INITIAL_MATRIX, 2.0, &G[1]));
+  PetscCall(Compare(G[0], G[1], &d[5], &same[5]));
+  PetscCall(IndGalerkinByBlocks(G[0], &blocks[5]));
+  PetscCall(IndGalerkinByBlocks(G[1], &blocks[6]));
 
   /* new values in A's pattern: the product made again in place */
   PetscCall(MatScale(A, -3.0));
@@ -114,7 +134,7 @@ static PetscErrorCode RandomProducts(PetscReal d[5], PetscBool *ok)
   PetscCall(MatDestroy(&P));
   PetscCall(MatDestroy(&A2));
   PetscCall(MatDestroy(&A));
-  PetscCall(RandomPair(40, 4, rnd, &A, &P));
+  PetscCall(RandomPair(48, 4, rnd, &A, &P));
   PetscCall(MatDuplicate(A, MAT_COPY_VALUES, &A2));
   PetscCall(IndGalerkinInstall(A));
   PetscCall(MatPtAP(A, P, MAT_INITIAL_MATRIX, 2.0, &F[0]));
@@ -126,7 +146,7 @@ static PetscErrorCode RandomProducts(PetscReal d[5], PetscBool *ok)
   PetscCall(MatDestroy(&P));
   PetscCall(MatDestroy(&A2));
   PetscCall(MatDestroy(&A));
-  PetscCall(RandomPair(40, 1, rnd, &A, &P1));
+  PetscCall(RandomPair(48, 1, rnd, &A, &P1));
   PetscCall(MatDuplicate(A, MAT_COPY_VALUES, &A2));
   PetscCall(IndGalerkinInstall(A));
   PetscCall(MatPtAP(A, P1, MAT_INITIAL_MATRIX, 2.0, &E[0]));
@@ -134,20 +154,23 @@ static PetscErrorCode RandomProducts(PetscReal d[5], PetscBool *ok)
   PetscCall(Compare(E[0], E[1], &d[3], &same[3]));
   PetscCall(IndGalerkinByBlocks(E[0], &blocks[3]));
 
-  *ok = (PetscBool)(same[0] && same[1] && same[2] && same[3] && same[4] && blocks[0] && !blocks[1] && blocks[2] &&
-                    !blocks[3] && blocks[4] && rbs == 6 && cbs == 6);
+  *ok = (PetscBool)(same[0] && same[1] && same[2] && same[3] && same[4] && same[5] && blocks[0] && !blocks[1] &&
+                    blocks[2] && !blocks[3] && blocks[4] && blocks[5] && !blocks[6] && rbs == 6 && cbs == 6);
   PetscCall(PetscPrintf(PETSC_COMM_WORLD,
     "random blocks: P^T A P differs from PETSc's by %.2e (by blocks %d, PETSc's %d, block sizes %" PetscInt_FMT
-    " x %" PetscInt_FMT "), after A changed %.2e; A P %.2e (by blocks %d); 3 x 4 blocks %.2e (by blocks %d); scalar "
-    "columns %.2e (by blocks %d); same patterns %d %d %d %d %d\n", (double)d[0], (int)blocks[0], (int)blocks[1], rbs,
-    cbs, (double)d[1], (double)d[2], (int)blocks[2], (double)d[4], (int)blocks[4], (double)d[3], (int)blocks[3],
-    (int)same[0], (int)same[1], (int)same[2], (int)same[3], (int)same[4]));
+    " x %" PetscInt_FMT "), the next level %.2e (by blocks %d, from PETSc's %d), after A changed %.2e; A P %.2e (by "
+    "blocks %d); 3 x 4 blocks %.2e (by blocks %d); scalar columns %.2e (by blocks %d); same patterns %d %d %d %d %d "
+    "%d\n", (double)d[0], (int)blocks[0], (int)blocks[1], rbs, cbs, (double)d[5], (int)blocks[5], (int)blocks[6],
+    (double)d[1], (double)d[2], (int)blocks[2], (double)d[4], (int)blocks[4], (double)d[3], (int)blocks[3],
+    (int)same[0], (int)same[1], (int)same[2], (int)same[3], (int)same[4], (int)same[5]));
   for (int k = 0; k < 2; ++k) {
     PetscCall(MatDestroy(&C[k]));
     PetscCall(MatDestroy(&D[k]));
     PetscCall(MatDestroy(&E[k]));
     PetscCall(MatDestroy(&F[k]));
+    PetscCall(MatDestroy(&G[k]));
   }
+  PetscCall(MatDestroy(&P2));
   PetscCall(MatDestroy(&P1));
   PetscCall(MatDestroy(&A2));
   PetscCall(MatDestroy(&A));
@@ -187,13 +210,14 @@ int main(int argc, char **argv)
   MatNullSpace nsp;
   Vec          b, x, x2, Uloc;
   PetscInt     its[2], n[2], by_blocks[2];
-  PetscReal    d[5], dl = 0, dx;
+  PetscReal    d[6], dl = 0, dx;
   PetscBool    ok, same = PETSC_TRUE;
 
   PetscFunctionBeginUser;
   PetscCall(PetscInitialize(&argc, &argv, NULL, help));
   PetscCall(RandomProducts(d, &ok));
-  ok = (PetscBool)(ok && d[0] < 1e-13 && d[1] < 1e-13 && d[2] < 1e-13 && d[3] < 1e-13 && d[4] < 1e-13);
+  ok = (PetscBool)(ok && d[0] < 1e-13 && d[1] < 1e-13 && d[2] < 1e-13 && d[3] < 1e-13 && d[4] < 1e-13 &&
+                   d[5] < 1e-13);
 
   /* the solver's multigrid on its Jacobian (products by blocks, the solver's default), then on a copy of it that has
      PETSc's products, with the interpolations the first set-up made */
