@@ -141,7 +141,9 @@ def main():
         codes = sorted(r[0] for r in results)
         check(codes[0] == 0 and codes[1] != 0, f"one restart finished and one was refused (exits {codes})")
         loser = [r[1] for r in results if r[0] != 0]
-        check(bool(loser) and "is in use by a run started" in loser[0], "the refused one says the directory is in use")
+        check(bool(loser) and "is in use by a run started" in loser[0],
+              "the refused one says the directory is in use" + ("" if not loser or "is in use by a run started" in
+                                                                 loser[0] else f" (it said: {loser[0].strip()!r})"))
     return check.status()
 
 

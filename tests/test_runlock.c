@@ -1,6 +1,11 @@
 static const char help[] = "Unit test: the run-directory lock's decisions (src/io/runlock.c) on small cases.\n";
 
+#define _XOPEN_SOURCE 700 /* mkdtemp */
+#include <dirent.h>
+#include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 #include "ind_runlock.h"
 
 static int failures = 0;
@@ -34,6 +39,36 @@ int main(int argc, char **argv)
   Expect(IndRunLockJudge(&o, "nodeA", "-", PETSC_FALSE) == IND_RUNLOCK_UNREADABLE, "a text naming no run: unreadable");
   IndRunLockParse("", &o);
   Expect(IndRunLockJudge(&o, "nodeA", "-", PETSC_FALSE) == IND_RUNLOCK_UNREADABLE, "an empty lock: unreadable");
+
+  /* a lock taken in a scratch directory: whole (this process's line) and alone there (the file it was written to,
+     before it took the lock's name at once, is gone); released, the directory is empty */
+  {
+    char           dir[] = "/tmp/indent-runlock-XXXXXX", path[PETSC_MAX_PATH_LEN], text[512] = "", want[64];
+    char           warning[256];
+    int            entries = 0;
+    FILE          *fp;
+    DIR           *d;
+    struct dirent *e;
+    Expect(mkdtemp(dir) != NULL, "a scratch directory");
+    PetscCall(IndRunLockTake(PETSC_COMM_SELF, dir, "-output_dir", warning, sizeof(warning)));
+    snprintf(path, sizeof(path), "%s/%s", dir, IND_RUNLOCK_FILE);
+    snprintf(want, sizeof(want), "pid %ld host ", (long)getpid());
+    fp = fopen(path, "r");
+    if (fp) {
+      size_t n = fread(text, 1, sizeof(text) - 1, fp);
+      text[n] = 0;
+      fclose(fp);
+    }
+    Expect(!strncmp(text, want, strlen(want)) && strchr(text, '\n'), "the lock names this process, whole");
+    d = opendir(dir);
+    while (d && (e = readdir(d)))
+      if (strcmp(e->d_name, ".") && strcmp(e->d_name, "..")) entries++;
+    if (d) closedir(d);
+    Expect(entries == 1 && !warning[0], "the lock is the directory's only file, taken without a warning");
+    IndRunLockRelease();
+    Expect(access(path, F_OK) != 0, "released: the lock is gone");
+    Expect(rmdir(dir) == 0, "released: the directory is empty");
+  }
   PetscCall(PetscPrintf(PETSC_COMM_SELF, "%d failure(s)\n", failures));
   PetscCall(PetscFinalize());
   return failures ? 1 : 0;

@@ -72,6 +72,33 @@ static PetscBool Alive(long pid)
   return PETSC_TRUE;
 }
 
+/* Creates the lock at path holding text, whole at once: the text goes to a file of this process's own, linked to the
+   lock's name (link fails when the lock exists), so that no other run reads a lock before its owner is in it (it took
+   an empty lock for one that names no run). Where the file system has no hard links: created exclusively, then
+   written. 0 or an errno (EEXIST: the lock is there). */
+static int CreateLock(const char dir[], const char path[], const char host[], const char text[])
+{
+  const size_t n = strlen(text);
+  char         own[PETSC_MAX_PATH_LEN];
+  int          fd, err = 0;
+
+  snprintf(own, sizeof(own), "%s/.%s.%s.%ld", dir, IND_RUNLOCK_FILE, host, (long)getpid());
+  fd = open(own, O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  if (fd < 0) return errno;
+  if (write(fd, text, n) != (ssize_t)n) err = errno ? errno : EIO;
+  if (close(fd) && !err) err = errno;
+  if (!err && link(own, path)) err = errno;
+  (void)unlink(own);
+  if (err != EPERM && err != ENOTSUP && err != EOPNOTSUPP && err != EMLINK && err != ENOSYS) return err;
+  fd = open(path, O_WRONLY | O_CREAT | O_EXCL, 0644);
+  if (fd < 0) return errno;
+  err = 0;
+  if (write(fd, text, n) != (ssize_t)n) err = errno ? errno : EIO;
+  if (close(fd) && !err) err = errno;
+  if (err) (void)unlink(path);
+  return err;
+}
+
 /* On rank 0: takes the lock, or says in why (a sentence) whose it is; warning: a stale lock taken over. */
 static void Take(const char dir[], char why[], size_t wlen, char warning[], size_t len)
 {
@@ -86,22 +113,17 @@ static void Take(const char dir[], char why[], size_t wlen, char warning[], size
   gmtime_r(&now, &utc);
   strftime(started, sizeof(started), "%Y-%m-%dT%H:%M:%SZ", &utc);
   for (int attempt = 0; attempt < 2; ++attempt) {
-    int fd = open(path, O_WRONLY | O_CREAT | O_EXCL, 0644);
-    if (fd >= 0) {
-      int n = snprintf(text, sizeof(text), "pid %ld host %s job %s started %s\n", (long)getpid(), host, JobId(),
-                       started);
-      if (write(fd, text, (size_t)n) != n || close(fd)) {
-        snprintf(why, wlen, "cannot write the lock '%s': %s", path, strerror(errno));
-        (void)unlink(path);
-        return;
-      }
+    int err;
+    snprintf(text, sizeof(text), "pid %ld host %s job %s started %s\n", (long)getpid(), host, JobId(), started);
+    err = CreateLock(dir, path, host, text);
+    if (!err) {
       snprintf(Held.path, sizeof(Held.path), "%s", path);
       Held.pid = getpid();
       atexit(Release);
       return;
     }
-    if (errno != EEXIST) {
-      snprintf(why, wlen, "cannot create the lock '%s': %s", path, strerror(errno));
+    if (err != EEXIST) {
+      snprintf(why, wlen, "cannot create the lock '%s': %s", path, strerror(err));
       return;
     }
     {
