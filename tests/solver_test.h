@@ -42,3 +42,22 @@ static inline PetscErrorCode SolverTestJacobianAtZero(IndApp app, Mat J, Vec *Ul
   PetscCall(IndBCApplyJacobian(IndAppGetBC(app), J));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
+
+/* The coarse operators of ksp's multigrid above its coarsest (levels 1 .. levels - 2; the coarsest may be moved to
+   one rank): *n of them in ops (at least 8 long), borrowed */
+static inline PetscErrorCode SolverTestCoarseOperators(KSP ksp, Mat ops[], PetscInt *n)
+{
+  PC       pc;
+  PetscInt levels;
+
+  PetscFunctionBeginUser;
+  PetscCall(KSPGetPC(ksp, &pc));
+  PetscCall(PCMGGetLevels(pc, &levels));
+  *n = 0;
+  for (PetscInt l = 1; l < levels - 1 && *n < 8; ++l) {
+    KSP smoother;
+    PetscCall(PCMGGetSmoother(pc, l, &smoother));
+    PetscCall(KSPGetOperators(smoother, &ops[(*n)++], NULL));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}

@@ -181,22 +181,16 @@ static PetscErrorCode RandomProducts(PetscReal d[6], PetscBool *ok)
    rank), and how many of them were made by blocks */
 static PetscErrorCode CoarseCopies(KSP ksp, Mat copies[], PetscInt *n, PetscInt *by_blocks)
 {
-  PC       pc;
-  PetscInt levels;
+  Mat ops[8];
 
   PetscFunctionBeginUser;
-  PetscCall(KSPGetPC(ksp, &pc));
-  PetscCall(PCMGGetLevels(pc, &levels));
-  *n = *by_blocks = 0;
-  for (PetscInt l = 1; l < levels - 1; ++l) {
-    KSP       smoother;
-    Mat       A;
+  PetscCall(SolverTestCoarseOperators(ksp, ops, n));
+  *by_blocks = 0;
+  for (PetscInt l = 0; l < *n; ++l) {
     PetscBool b;
-    PetscCall(PCMGGetSmoother(pc, l, &smoother));
-    PetscCall(KSPGetOperators(smoother, &A, NULL));
-    PetscCall(IndGalerkinByBlocks(A, &b));
+    PetscCall(IndGalerkinByBlocks(ops[l], &b));
     *by_blocks += b;
-    PetscCall(MatDuplicate(A, MAT_COPY_VALUES, &copies[(*n)++]));
+    PetscCall(MatDuplicate(ops[l], MAT_COPY_VALUES, &copies[l]));
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -27,19 +27,14 @@ static PetscErrorCode InodeCount(Mat M, PetscInt *count)
 /* Inode groups summed over the coarse operators above the coarsest, all ranks */
 static PetscErrorCode CoarseInodes(KSP ksp, PetscInt *total)
 {
-  PC       pc;
-  PetscInt levels, n;
+  Mat      ops[8];
+  PetscInt nops = 0, n;
 
   PetscFunctionBeginUser;
   *total = 0;
-  PetscCall(KSPGetPC(ksp, &pc));
-  PetscCall(PCMGGetLevels(pc, &levels));
-  for (PetscInt l = 1; l < levels - 1; ++l) {
-    KSP smoother;
-    Mat A;
-    PetscCall(PCMGGetSmoother(pc, l, &smoother));
-    PetscCall(KSPGetOperators(smoother, &A, NULL));
-    PetscCall(InodeCount(A, &n));
+  PetscCall(SolverTestCoarseOperators(ksp, ops, &nops));
+  for (PetscInt l = 0; l < nops; ++l) {
+    PetscCall(InodeCount(ops[l], &n));
     *total += n;
   }
   PetscCall(MPIU_Allreduce(MPI_IN_PLACE, total, 1, MPIU_INT, MPI_SUM, PetscObjectComm((PetscObject)ksp)));
