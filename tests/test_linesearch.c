@@ -23,7 +23,8 @@ static PetscReal StepError(PetscReal a, PetscReal ga, PetscReal b, PetscReal gb,
 typedef struct {
   PetscReal shift;  /* F_i = atan(x_i - shift): the energy is convex, and full Newton steps diverge beyond 1.39 */
   PetscReal domain; /* the residual exists for x_i > domain only */
-  PetscReal linear; /* > 0: F_i = linear (x_i - shift) instead, a quadratic energy */
+  PetscReal linear; /* not 0: F_i = linear (x_i - shift) instead, a quadratic energy (concave for linear < 0) */
+  PetscReal flip;   /* -1: the Jacobian given to Newton has the wrong sign, its direction raises |F| */
 } Problem;
 
 static PetscErrorCode Residual(SNES snes, Vec X, Vec F, void *ctx)
@@ -38,7 +39,7 @@ static PetscErrorCode Residual(SNES snes, Vec X, Vec F, void *ctx)
   PetscCall(VecGetArrayRead(X, &x));
   PetscCall(VecGetArray(F, &f));
   for (PetscInt i = 0; i < n; ++i) {
-    f[i] = p->linear > 0 ? p->linear * (x[i] - p->shift) : PetscAtanReal(x[i] - p->shift);
+    f[i] = p->linear != 0 ? p->linear * (x[i] - p->shift) : PetscAtanReal(x[i] - p->shift);
     if (x[i] <= p->domain) outside++;
   }
   PetscCall(VecRestoreArrayRead(X, &x));
@@ -59,8 +60,8 @@ static PetscErrorCode Jacobian(SNES snes, Vec X, Mat J, Mat P, void *ctx)
   PetscCall(VecGetOwnershipRange(X, &lo, &hi));
   PetscCall(VecGetArrayRead(X, &x));
   for (PetscInt i = lo; i < hi; ++i) {
-    const PetscReal d = x[i - lo] - p->shift, v = p->linear > 0 ? p->linear : 1 / (1 + d * d);
-    PetscCall(MatSetValue(P, i, i, v, INSERT_VALUES));
+    const PetscReal d = x[i - lo] - p->shift, v = p->linear != 0 ? p->linear : 1 / (1 + d * d);
+    PetscCall(MatSetValue(P, i, i, (p->flip < 0 ? -1 : 1) * v, INSERT_VALUES));
   }
   PetscCall(VecRestoreArrayRead(X, &x));
   PetscCall(MatAssemblyBegin(P, MAT_FINAL_ASSEMBLY));
@@ -127,7 +128,9 @@ int main(int argc, char **argv)
   Check("a slope that is not a number: b", StepError(0, 1, 1, NAN, 1), 0);
 
   {
-    Problem             quad = {2.0, -PETSC_MAX_REAL, 5.0}, atan = {0.5, -PETSC_MAX_REAL, 0}, fence = {0.5, -2.5, 0};
+    Problem             quad = {2.0, -PETSC_MAX_REAL, 5.0, 1}, atan = {0.5, -PETSC_MAX_REAL, 0, 1};
+    Problem             fence = {0.5, -2.5, 0, 1}, concave = {2.0, -PETSC_MAX_REAL, -5.0, 1};
+    Problem             wrong = {2.0, -PETSC_MAX_REAL, 5.0, -1};
     PetscReal           err;
     PetscInt            its, evals;
     SNESConvergedReason reason;
@@ -155,6 +158,23 @@ int main(int argc, char **argv)
                       SNESConvergedReasons[reason]);
     Check("atan with a domain: converged", reason > 0 ? 0 : 1, 0);
     Check("atan with a domain: error after Newton", err, 1e-12);
+
+    /* not a descent direction of the energy (slope < 0 at 0), but the full step zeroes F: taken, as before */
+    PetscCall(Solve(&concave, -7, &err, &its, &evals, &reason));
+    if (!rank) printf("concave energy: %d Newton iteration(s), %d residuals\n", (int)its, (int)evals);
+    Check("concave energy: error after Newton", err, 1e-12);
+    Check("concave energy: one iteration, two residuals", (PetscReal)(PetscAbsInt(its - 1) + PetscAbsInt(evals - 2)),
+          0);
+
+    /* a direction along which |F| rises at every step (the wrong Jacobian): the search fails at once, 20 halvings
+       after the full step, and Newton stops there instead of taking steps away from the root */
+    PetscCall(Solve(&wrong, -7, &err, &its, &evals, &reason));
+    if (!rank) printf("a direction that raises |F|: %d Newton iterations, %d residuals, %s\n", (int)its, (int)evals,
+                      SNESConvergedReasons[reason]);
+    Check("a direction that raises |F|: the line search fails", reason == SNES_DIVERGED_LINE_SEARCH ? 0 : 1, 0);
+    Check("a direction that raises |F|: no iteration taken", (PetscReal)its, 0);
+    Check("a direction that raises |F|: residuals beyond 22", (PetscReal)PetscMax(evals - 22, 0), 0);
+    Check("a direction that raises |F|: the start kept", PetscAbsReal(err - 9), 1e-12);
   }
   PetscCall(PetscFinalize());
   return failures ? 1 : 0;

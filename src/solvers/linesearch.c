@@ -5,6 +5,8 @@ static const PetscReal full_step_slope = 0.1;
 /* Wolfe's curvature condition, with the constant usual for Newton's method */
 static const PetscReal curvature = 0.9;
 static const PetscInt  halvings = 20, secants = 10;
+/* Armijo's sufficient decrease of |F| where the energy gives no direction, with its usual constant */
+static const PetscReal armijo = 1e-4;
 
 PetscReal IndSecantStep(PetscReal a, PetscReal ga, PetscReal b, PetscReal gb)
 {
@@ -75,6 +77,29 @@ static PetscErrorCode CriticalPointApply(SNESLineSearch ls, void *ctx)
     /* Short of the curvature condition: after every secant step the last one, closer to the critical point than
        the start; otherwise b, where the secant has no root ahead or its point does not exist */
     lambda = accepted || trials == secants ? held : b;
+  } else if (!(g0 > 0)) {
+    /* Not a descent direction of the energy (friction's unsymmetric rows can make one): it says nothing along
+       the step, but |F| does, which the Newton direction descends for any linear solve with rtol < 1. Halve the
+       step until |F| falls (Armijo's condition); a direction along which it never falls is of no use, and the
+       search fails at once rather than leave Newton to wander from a worse point. */
+    PetscReal f0, f;
+    PetscCall(VecNorm(F, NORM_2, &f0));
+    PetscCall(VecNorm(G, NORM_2, &f));
+    accepted = f <= (1 - armijo * lambda) * f0 ? PETSC_TRUE : PETSC_FALSE;
+    for (PetscInt k = 0; k < halvings && !accepted; ++k) {
+      lambda *= 0.5;
+      PetscCall(TryStep(snes, X, Y, lambda, W, G, &exists));
+      if (!exists) continue;
+      PetscCall(VecNorm(G, NORM_2, &f));
+      accepted = f <= (1 - armijo * lambda) * f0 ? PETSC_TRUE : PETSC_FALSE;
+    }
+    held = lambda;
+    if (!accepted) {
+      if (monitor) PetscCall(PetscViewerASCIIPrintf(monitor, "    Line search: slope %g at 0: |F| %g rises along "
+                                                    "the step\n", (double)g0, (double)f0));
+      PetscCall(SNESLineSearchSetReason(ls, SNES_LINESEARCH_FAILED_REDUCT));
+      PetscFunctionReturn(PETSC_SUCCESS);
+    }
   }
   if (monitor) {
     PetscInt tab;
