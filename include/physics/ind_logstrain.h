@@ -38,11 +38,21 @@ void IndSymEigen(const PetscReal A[6], PetscReal lambda[3], PetscReal V[9]);
 int IndLogStrainFromGradient(const PetscReal H[9], IndLogStrain *ls, PetscReal E[6]);
 /* S = T : 2 dE/dC, both tensor components. */
 void IndLogStrainStress(const IndLogStrain *ls, const PetscReal T[6], PetscReal S[6]);
+/* The same from T~ = N^T T N (IndLogStrainIntoBasis), when the caller needs T~ too. */
+void IndLogStrainStressFromBasis(const IndLogStrain *ls, const PetscReal Tt[9], PetscReal S[6]);
 /* DS = dS/dE_GL (6x6) from the stress T and the symmetric tangent DT = dT/dE (6x6) of the small-strain
    kernel; isotropic: DT is an isotropic tensor (elastic), the same in every basis, which saves its
    rotation into the eigenbasis of C. */
 void IndLogStrainTangent(const IndLogStrain *ls, const PetscReal T[6], const PetscReal DT[36], PetscBool isotropic,
                          PetscReal DS[36]);
+/* At = N^T A N: a symmetric tensor A (Voigt, tensor components) in the eigenbasis of C, as a 3x3 matrix. */
+void IndLogStrainIntoBasis(const IndLogStrain *ls, const PetscReal A[6], PetscReal At[9]);
+/* The tangent of IndLogStrainTangent in the eigenbasis of C: M = dS~/dE~_GL (6x6, engineering shears in,
+   tensor components out, both components in that basis), from T~ = N^T T N (3x3). A finite-strain
+   stiffness B^T DS B equals B~^T M B~ with B~ the strain columns in that basis, which spares rotating the
+   6x6 tangent back. */
+void IndLogStrainTangentEigen(const IndLogStrain *ls, const PetscReal Tt[9], const PetscReal DT[36],
+                              PetscBool isotropic, PetscReal M[36]);
 /* Cauchy stress sigma = F S F^T / J (tensor components). */
 void IndLogStrainCauchy(const PetscReal F[9], PetscReal J, const PetscReal S[6], PetscReal sigma[6]);
 /* The Eulerian (spatial) Hencky strain (1/2) ln(F F^T) = R E R^T, engineering shears. */

@@ -155,10 +155,37 @@ PetscErrorCode IndAssemblyCommit(IndAssembly a, Vec Uloc)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+void IndCellMatrixCompleteLastNode(PetscInt nb, PetscReal *Ke)
+{
+  const PetscInt nd = 3 * nb, nr = nd - 3;
+
+  for (PetscInt r = 1; r < nr; ++r)
+    for (PetscInt c = 0; c < r; ++c) Ke[r * nd + c] = Ke[c * nd + r];
+  for (PetscInt r = 0; r < nr; ++r) {
+    PetscReal *Kr = Ke + r * nd;
+    for (int j = 0; j < 3; ++j) {
+      PetscReal s = 0;
+      for (PetscInt b = 0; b < nb - 1; ++b) s += Kr[3 * b + j];
+      Kr[nr + j] = -s;
+    }
+  }
+  for (int i = 0; i < 3; ++i)
+    for (int j = i; j < 3; ++j) {
+      PetscReal s = 0;
+      for (PetscInt b = 0; b < nb - 1; ++b) s += Ke[(3 * b + i) * nd + nr + j];
+      Ke[(nr + i) * nd + nr + j] = Ke[(nr + j) * nd + nr + i] = -s;
+    }
+  for (int i = 0; i < 3; ++i)
+    for (PetscInt c = 0; c < nr; ++c) Ke[(nr + i) * nd + c] = Ke[c * nd + nr + i];
+}
+
 PetscErrorCode IndAssemblyJacobian(IndAssembly a, Vec Uloc, Mat J)
 {
   const IndDiscLayout *disc = a->layout;
   const PetscInt     nb = disc->nb, nq = disc->nq, nd = disc->ndof, stride = a->history->stride;
+  /* the last node's rows and columns follow from the others' (an eighth of a hexahedron's), but on an axisymmetric
+     section; completing them costs more than it saves with one point a cell (P1: 45 ns against 30 ns saved) */
+  const PetscInt     nt = a->khoop || nq == 1 ? nb : nb - 1;
   const PetscScalar *u, *xn, *hold;
   IndMatInsert       ins = J == a->J ? a->insert : NULL; /* cached positions are the matrix's own */
 
@@ -180,10 +207,12 @@ PetscErrorCode IndAssemblyJacobian(IndAssembly a, Vec Uloc, Mat J)
       const PetscReal *old = hold + i * stride + q * IND_HISTORY_NVAL;
       /* A failed point was already reported by the residual at this displacement, which stops the
          Newton iteration before any Jacobian; its NaN tangent cannot go unnoticed either. */
-      (void)a->kin->stiffness(m, a->tangent, nb, a->G, a->khoop, a->ue, old, w, a->B, a->DB, a->Ke);
+      (void)a->kin->stiffness(m, a->tangent, nb, nt, a->G, a->khoop, a->ue, old, w, a->B, a->DB, a->Ke);
     }
-    for (PetscInt r = 1; r < nd; ++r)
-      for (PetscInt c = 0; c < r; ++c) a->Ke[r * nd + c] = a->Ke[c * nd + r];
+    if (nt < nb) IndCellMatrixCompleteLastNode(nb, a->Ke);
+    else
+      for (PetscInt r = 1; r < nd; ++r)
+        for (PetscInt c = 0; c < r; ++c) a->Ke[r * nd + c] = a->Ke[c * nd + r];
     if (ins) PetscCall(IndMatInsertCell(ins, J, i, a->Ke));
     else PetscCall(MatSetValues(J, nd, g, nd, g, a->Ke, ADD_VALUES));
   }

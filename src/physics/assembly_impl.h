@@ -99,8 +99,10 @@ struct _IndKinematics {
   IndPlasticStatus (*stress)(const IndMaterial *m, IndTangent tangent, PetscInt nb, const PetscReal *G,
                              const PetscReal *hoop, const PetscReal *ue, const PetscReal *old, PetscReal *trial,
                              PetscReal P[9], PetscReal *dp);
-  /* Ke += w times the point's stiffness, on and above the diagonal; B and DB workspaces of 6 nd */
-  IndPlasticStatus (*stiffness)(const IndMaterial *m, IndTangent tangent, PetscInt nb, const PetscReal *G,
+  /* Ke (nd x nd, nd = 3 nb) += w times the point's stiffness, on and above the diagonal, in the rows and columns of
+     the first nt nodes (nt = nb, or nb - 1 when the cell loop completes the last node's from the others'); B and DB
+     workspaces of 6 nd */
+  IndPlasticStatus (*stiffness)(const IndMaterial *m, IndTangent tangent, PetscInt nb, PetscInt nt, const PetscReal *G,
                                 const PetscReal *hoop, const PetscReal *ue, const PetscReal *old, PetscReal w,
                                 PetscReal *B, PetscReal *DB, PetscReal *Ke);
   /* Cauchy stress and strain of a committed point h; w holds the reference weight and becomes the current one */
@@ -109,6 +111,12 @@ struct _IndKinematics {
   /* large deformation: an inverted point fails the step, contact areas follow the deformed surface */
   PetscBool large;
 };
+
+/* The last node's rows and columns of a cell matrix Ke (nd x nd, nd = 3 nb) from the others', given the upper
+   triangle of the first nd - 3 rows and columns: the shape functions' gradients sum to zero at every point
+   (partition of unity), and so does every row of 3 x 3 blocks of a stiffness B^T D B + geometric. On return Ke
+   is whole and symmetric. Not on an axisymmetric section, whose hoop terms N_a / r do not sum to zero. */
+void IndCellMatrixCompleteLastNode(PetscInt nb, PetscReal *Ke);
 
 /* The kinematics registered by default. */
 const IndKinematics *IndKinematicsSmall(void);

@@ -5,24 +5,20 @@
 #include "assembly_impl.h"
 #include "ind_logstrain.h"
 
-/* The material point: the small-strain response at the Hencky strain, mapped to S (and DS). An
-   inverted point (det F <= 0) fails like a return map that does not converge: the step is cut. */
+/* The material point: the small-strain response at the Hencky strain, mapped to S. An inverted point (det F <= 0)
+   fails like a return map that does not converge: the step is cut. */
 static inline IndPlasticStatus FinitePoint(const IndMaterial *m, IndTangent tangent, const PetscReal H[9],
-                                           const PetscReal *old, PetscReal *trial, PetscReal S[6], PetscReal *DS,
-                                           PetscReal *dp)
+                                           const PetscReal *old, PetscReal *trial, PetscReal S[6], PetscReal *dp)
 {
   IndLogStrain     ls;
   IndPlasticStatus status;
-  PetscReal        E[6], T[6], D[36];
+  PetscReal        E[6], T[6];
 
   *dp = 0.0;
   if (IndLogStrainFromGradient(H, &ls, E)) return IND_PLASTIC_NOT_CONVERGED;
-  status = MaterialResponse(m, tangent, E, old, trial, T, DS ? D : NULL, dp);
+  status = MaterialResponse(m, tangent, E, old, trial, T, NULL, dp);
   if (status != IND_PLASTIC_OK) return status;
   IndLogStrainStress(&ls, T, S);
-  /* a point that did not yield has the elastic, isotropic tangent (so has every point under
-     -tangent elastic) */
-  if (DS) IndLogStrainTangent(&ls, T, D, (PetscBool)(*dp == 0.0 || tangent == IND_TANGENT_ELASTIC), DS);
   return status;
 }
 
@@ -34,7 +30,7 @@ static IndPlasticStatus Stress(const IndMaterial *m, IndTangent tangent, PetscIn
   IndPlasticStatus status;
 
   IndDeformationGradient(nb, G, hoop, ue, H, F);
-  status = FinitePoint(m, tangent, H, old, trial, S, NULL, dp);
+  status = FinitePoint(m, tangent, H, old, trial, S, dp);
   if (status != IND_PLASTIC_OK) return status;
   /* P = F S = S + H S, summed so that small strains keep their digits */
   for (int r = 0; r < 3; ++r) {
@@ -49,52 +45,69 @@ static IndPlasticStatus Stress(const IndMaterial *m, IndTangent tangent, PetscIn
   return status;
 }
 
-/* Ke += w (B^T DS B + geometric) on and above the diagonal, B the 6 x nd derivative of the
-   Green-Lagrange strain (engineering shears): column 3a+i of B is sym(F^T dH), dH = e_i (x) G_a (plus
-   hoop_a e_y (x) e_y for i = x on an axisymmetric section). B and DS B are stored by columns (Bt[6 k + r] =
-   B[r][k]) so that each entry of Ke is one contiguous dot product. */
-static inline void AddFiniteStiffness(PetscInt nb, const PetscReal *G, const PetscReal *hoop, const PetscReal F[9],
-                                      const PetscReal S[6], const PetscReal DS[36], PetscReal w, PetscReal *Bt,
-                                      PetscReal *DBt, PetscReal *Ke)
+/* Ke += w (B^T DS B + geometric) on and above the diagonal, in the rows and columns of the first nt nodes. B is the
+   6 x nd derivative of the Green-Lagrange strain (engineering shears), taken in the eigenbasis N of C where the
+   tangent M is formed (DS = Re^T M Re): column 3a+i of B~ is sym(F~^T dH~) = sym(f~_i (x) g~_a), f~_i row i of
+   F~ = F N and g~_a = N^T G_a (plus hoop_a sym(f~_y (x) n_y) for i = x on an axisymmetric section, n_y = N^T e_y).
+   Rotating F and the gradients (27 + 9 nt products) costs less than rotating the 6 x 6 tangent back. B~ and
+   w M B~ are stored by rows (Bt[r nd + k] = B~[r][k]), so that the loops over columns are contiguous. */
+static inline void AddFiniteStiffness(PetscInt nb, PetscInt nt, const PetscReal *G, const PetscReal *hoop,
+                                      const PetscReal F[9], const PetscReal N[9], const PetscReal S[6],
+                                      const PetscReal M[36], PetscReal w, PetscReal *Bt, PetscReal *DBt, PetscReal *Ke)
 {
-  const PetscInt nd = 3 * nb;
+  const PetscInt nd = 3 * nb, ne = 3 * nt;
+  PetscReal      Ft[9];
 
-  for (PetscInt a = 0; a < nb; ++a) {
-    const PetscReal gx = G[3 * a], gy = G[3 * a + 1], gz = G[3 * a + 2];
+  for (int i = 0; i < 3; ++i)
+    for (int k = 0; k < 3; ++k) Ft[3 * i + k] = F[3 * i] * N[k] + F[3 * i + 1] * N[3 + k] + F[3 * i + 2] * N[6 + k];
+  for (PetscInt a = 0; a < nt; ++a) {
+    const PetscReal *g  = G + 3 * a;
+    const PetscReal  gx = g[0] * N[0] + g[1] * N[3] + g[2] * N[6], gy = g[0] * N[1] + g[1] * N[4] + g[2] * N[7],
+                     gz = g[0] * N[2] + g[1] * N[5] + g[2] * N[8];
     for (int i = 0; i < 3; ++i) {
-      const PetscReal F0 = F[3 * i], F1 = F[3 * i + 1], F2 = F[3 * i + 2];
-      PetscReal      *b = Bt + 6 * (3 * a + i), *db = DBt + 6 * (3 * a + i);
-      b[0] = F0 * gx;
-      b[1] = F1 * gy;
-      b[2] = F2 * gz;
-      b[3] = F0 * gy + F1 * gx;
-      b[4] = F1 * gz + F2 * gy;
-      b[5] = F0 * gz + F2 * gx;
-      if (hoop && i == 0) { /* sym(F^T (e_y (x) e_y)) hoop_a: column y of F^T, in row and column y */
-        b[1] += F[4] * hoop[a];
-        b[3] += F[3] * hoop[a];
-        b[4] += F[5] * hoop[a];
-      }
-      for (int r = 0; r < 6; ++r) {
-        const PetscReal *Dr = DS + 6 * r;
-        db[r] = w * (Dr[0] * b[0] + Dr[1] * b[1] + Dr[2] * b[2] + Dr[3] * b[3] + Dr[4] * b[4] + Dr[5] * b[5]);
-      }
+      const PetscReal F0 = Ft[3 * i], F1 = Ft[3 * i + 1], F2 = Ft[3 * i + 2];
+      const PetscInt  k = 3 * a + i;
+      Bt[0 * nd + k] = F0 * gx;
+      Bt[1 * nd + k] = F1 * gy;
+      Bt[2 * nd + k] = F2 * gz;
+      Bt[3 * nd + k] = F0 * gy + F1 * gx;
+      Bt[4 * nd + k] = F1 * gz + F2 * gy;
+      Bt[5 * nd + k] = F0 * gz + F2 * gx;
     }
+    if (hoop) { /* hoop_a sym(f~_y (x) n_y) in column x, f~_y row y of F~ */
+      const PetscReal h = hoop[a], n0 = h * N[3], n1 = h * N[4], n2 = h * N[5];
+      const PetscInt  k = 3 * a;
+      Bt[0 * nd + k] += Ft[3] * n0;
+      Bt[1 * nd + k] += Ft[4] * n1;
+      Bt[2 * nd + k] += Ft[5] * n2;
+      Bt[3 * nd + k] += Ft[3] * n1 + Ft[4] * n0;
+      Bt[4 * nd + k] += Ft[4] * n2 + Ft[5] * n1;
+      Bt[5 * nd + k] += Ft[3] * n2 + Ft[5] * n0;
+    }
+  }
+  /* w M B~, row by row: the loops over the columns k are independent and contiguous, so they vectorise */
+  for (int r = 0; r < 6; ++r) {
+    const PetscReal *Mr = M + 6 * r;
+    const PetscReal  m0 = w * Mr[0], m1 = w * Mr[1], m2 = w * Mr[2], m3 = w * Mr[3], m4 = w * Mr[4], m5 = w * Mr[5];
+    PetscReal       *db = DBt + r * nd;
+    for (PetscInt k = 0; k < ne; ++k)
+      db[k] = m0 * Bt[k] + m1 * Bt[nd + k] + m2 * Bt[2 * nd + k] + m3 * Bt[3 * nd + k] + m4 * Bt[4 * nd + k] +
+              m5 * Bt[5 * nd + k];
   }
   /* the upper triangle only: the cell loop mirrors it */
-  for (PetscInt j = 0; j < nd; ++j) {
-    const PetscReal *b  = Bt + 6 * j;
-    PetscReal       *Kj = Ke + j * nd;
-    for (PetscInt k = j; k < nd; ++k) {
-      const PetscReal *db = DBt + 6 * k;
-      Kj[k] += b[0] * db[0] + b[1] * db[1] + b[2] * db[2] + b[3] * db[3] + b[4] * db[4] + b[5] * db[5];
-    }
+  for (PetscInt j = 0; j < ne; ++j) {
+    const PetscReal b0 = Bt[j], b1 = Bt[nd + j], b2 = Bt[2 * nd + j], b3 = Bt[3 * nd + j], b4 = Bt[4 * nd + j],
+                    b5 = Bt[5 * nd + j];
+    PetscReal      *Kj = Ke + j * nd;
+    for (PetscInt k = j; k < ne; ++k)
+      Kj[k] += b0 * DBt[k] + b1 * DBt[nd + k] + b2 * DBt[2 * nd + k] + b3 * DBt[3 * nd + k] + b4 * DBt[4 * nd + k] +
+               b5 * DBt[5 * nd + k];
   }
-  for (PetscInt a = 0; a < nb; ++a) {
+  for (PetscInt a = 0; a < nt; ++a) {
     const PetscReal ga[3] = {G[3 * a], G[3 * a + 1], G[3 * a + 2]};
     const PetscReal Sg[3] = {S[0] * ga[0] + S[3] * ga[1] + S[5] * ga[2], S[3] * ga[0] + S[1] * ga[1] + S[4] * ga[2],
                              S[5] * ga[0] + S[4] * ga[1] + S[2] * ga[2]};
-    for (PetscInt b = a; b < nb; ++b) {
+    for (PetscInt b = a; b < nt; ++b) {
       const PetscReal g = w * (Sg[0] * G[3 * b] + Sg[1] * G[3 * b + 1] + Sg[2] * G[3 * b + 2]);
       for (int i = 0; i < 3; ++i) Ke[(3 * a + i) * nd + 3 * b + i] += g;
       if (hoop) {
@@ -108,16 +121,26 @@ static inline void AddFiniteStiffness(PetscInt nb, const PetscReal *G, const Pet
   }
 }
 
-static IndPlasticStatus Stiffness(const IndMaterial *m, IndTangent tangent, PetscInt nb, const PetscReal *G,
-                                  const PetscReal *hoop, const PetscReal *ue, const PetscReal *old, PetscReal w,
-                                  PetscReal *B, PetscReal *DB, PetscReal *Ke)
+static IndPlasticStatus Stiffness(const IndMaterial *m, IndTangent tangent, PetscInt nb, PetscInt nt,
+                                  const PetscReal *G, const PetscReal *hoop, const PetscReal *ue, const PetscReal *old,
+                                  PetscReal w, PetscReal *B, PetscReal *DB, PetscReal *Ke)
 {
-  PetscReal        H[9], F[9], S[6], DS[36], dp;
+  IndLogStrain     ls;
+  PetscReal        H[9], F[9], E[6], T[6], Tt[9], S[6], D[36], M[36], dp;
   IndPlasticStatus status;
 
   IndDeformationGradient(nb, G, hoop, ue, H, F);
-  status = FinitePoint(m, tangent, H, old, NULL, S, DS, &dp);
-  if (status == IND_PLASTIC_OK) AddFiniteStiffness(nb, G, hoop, F, S, DS, w, B, DB, Ke);
+  if (IndLogStrainFromGradient(H, &ls, E)) return IND_PLASTIC_NOT_CONVERGED;
+  status = MaterialResponse(m, tangent, E, old, NULL, T, D, &dp);
+  if (status != IND_PLASTIC_OK) return status;
+  IndLogStrainIntoBasis(&ls, T, Tt);
+  IndLogStrainStressFromBasis(&ls, Tt, S);
+  /* a point that did not yield has the elastic, isotropic tangent (so has every point under -tangent elastic) */
+  IndLogStrainTangentEigen(&ls, Tt, D, (PetscBool)(dp == 0.0 || tangent == IND_TANGENT_ELASTIC), M);
+  /* the linear tetrahedron and hexahedron by constant sizes: their loops are unrolled */
+  if (nb == 4 && nt == 4) AddFiniteStiffness(4, 4, G, hoop, F, ls.N, S, M, w, B, DB, Ke);
+  else if (nb == 8 && nt == 7) AddFiniteStiffness(8, 7, G, hoop, F, ls.N, S, M, w, B, DB, Ke);
+  else AddFiniteStiffness(nb, nt, G, hoop, F, ls.N, S, M, w, B, DB, Ke);
   return status;
 }
 

@@ -21,14 +21,14 @@ static inline void Strain(PetscInt nb, const PetscReal *G, const PetscReal *hoop
     for (PetscInt a = 0; a < nb; ++a) eps[1] += hoop[a] * u[3 * a];
 }
 
-/* Ke += w B^T D B on and above the diagonal, using the sparsity of B: column 3b+c of B holds the
-   gradient of N_b (and for c = x on an axisymmetric section hoop_b in the yy row). D is symmetric (elastic
-   and consistent plastic tangents alike), so is Ke. */
-static inline void AddBtDB(PetscInt nb, const PetscReal *G, const PetscReal *hoop, const PetscReal D[36], PetscReal w,
-  PetscReal *DB, PetscReal *Ke)
+/* Ke += w B^T D B on and above the diagonal, in the rows and columns of the first nt nodes, using the sparsity of B:
+   column 3b+c of B holds the gradient of N_b (and for c = x on an axisymmetric section hoop_b in the yy row). D is
+   symmetric (elastic and consistent plastic tangents alike), so is Ke. */
+static inline void AddBtDB(PetscInt nb, PetscInt nt, const PetscReal *G, const PetscReal *hoop, const PetscReal D[36],
+                           PetscReal w, PetscReal *DB, PetscReal *Ke)
 {
-  const PetscInt nd = 3 * nb;
-  for (PetscInt b = 0; b < nb; ++b) {
+  const PetscInt nd = 3 * nb, ne = 3 * nt;
+  for (PetscInt b = 0; b < nt; ++b) {
     const PetscReal gx = G[3 * b], gy = G[3 * b + 1], gz = G[3 * b + 2], hb = hoop ? hoop[b] : 0.0;
     for (int r = 0; r < 6; ++r) {
       const PetscReal *Dr = D + r * 6;
@@ -38,13 +38,13 @@ static inline void AddBtDB(PetscInt nb, const PetscReal *G, const PetscReal *hoo
     }
   }
   /* the upper triangle only: the cell loop mirrors it */
-  for (PetscInt a = 0; a < nb; ++a) {
+  for (PetscInt a = 0; a < nt; ++a) {
     const PetscReal gx = w * G[3 * a], gy = w * G[3 * a + 1], gz = w * G[3 * a + 2], ha = hoop ? w * hoop[a] : 0.0;
     PetscReal      *K0 = Ke + (3 * a) * nd, *K1 = K0 + nd, *K2 = K1 + nd;
-    for (PetscInt k = 3 * a; k < nd; ++k)
+    for (PetscInt k = 3 * a; k < ne; ++k)
       K0[k] += gx * DB[0 * nd + k] + gy * DB[3 * nd + k] + gz * DB[5 * nd + k] + ha * DB[1 * nd + k];
-    for (PetscInt k = 3 * a + 1; k < nd; ++k) K1[k] += gy * DB[1 * nd + k] + gx * DB[3 * nd + k] + gz * DB[4 * nd + k];
-    for (PetscInt k = 3 * a + 2; k < nd; ++k) K2[k] += gz * DB[2 * nd + k] + gy * DB[4 * nd + k] + gx * DB[5 * nd + k];
+    for (PetscInt k = 3 * a + 1; k < ne; ++k) K1[k] += gy * DB[1 * nd + k] + gx * DB[3 * nd + k] + gz * DB[4 * nd + k];
+    for (PetscInt k = 3 * a + 2; k < ne; ++k) K2[k] += gz * DB[2 * nd + k] + gy * DB[4 * nd + k] + gx * DB[5 * nd + k];
   }
 }
 
@@ -63,9 +63,9 @@ static IndPlasticStatus Stress(const IndMaterial *m, IndTangent tangent, PetscIn
   return status;
 }
 
-static IndPlasticStatus Stiffness(const IndMaterial *m, IndTangent tangent, PetscInt nb, const PetscReal *G,
-                                  const PetscReal *hoop, const PetscReal *ue, const PetscReal *old, PetscReal w,
-                                  PetscReal *B, PetscReal *DB, PetscReal *Ke)
+static IndPlasticStatus Stiffness(const IndMaterial *m, IndTangent tangent, PetscInt nb, PetscInt nt,
+                                  const PetscReal *G, const PetscReal *hoop, const PetscReal *ue, const PetscReal *old,
+                                  PetscReal w, PetscReal *B, PetscReal *DB, PetscReal *Ke)
 {
   PetscReal        eps[6], s[6], D[36], dp;
   IndPlasticStatus status;
@@ -73,7 +73,7 @@ static IndPlasticStatus Stiffness(const IndMaterial *m, IndTangent tangent, Pets
   (void)B;
   Strain(nb, G, hoop, ue, eps);
   status = MaterialResponse(m, tangent, eps, old, NULL, s, D, &dp);
-  AddBtDB(nb, G, hoop, D, w, DB, Ke);
+  AddBtDB(nb, nt, G, hoop, D, w, DB, Ke);
   return status;
 }
 

@@ -72,9 +72,10 @@ void IndSymEigen(const PetscReal S[6], PetscReal lambda[3], PetscReal V[9])
   {
     const PetscReal J3 = B[0] * (B[4] * B[8] - B[5] * B[7]) - B[1] * (B[3] * B[8] - B[5] * B[6]) +
                          B[2] * (B[3] * B[7] - B[4] * B[6]);
-    const PetscReal r  = 2.0 * PetscSqrtReal(J2 / 3.0);
-    const PetscReal q  = 3.0 / J2;
-    PetscReal       c  = 0.5 * J3 * q * PetscSqrtReal(q);
+    /* r = 2 sqrt(J2 / 3), c = (J3 / 2) (3 / J2)^(3/2): one square root and one division */
+    const PetscReal sJ = PetscSqrtReal(J2);
+    const PetscReal r  = sJ * 1.1547005383792515;
+    PetscReal       c  = 2.598076211353316 * J3 / (J2 * sJ);
     PetscReal       alpha;
     c     = PetscMin(1.0, PetscMax(-1.0, c));
     alpha = PetscAcosReal(c) / 3.0;
@@ -92,8 +93,8 @@ void IndSymEigen(const PetscReal S[6], PetscReal lambda[3], PetscReal V[9])
         for (int d = 0; d < 3; ++d) v1[d] = c[d];
       }
     }
-    best = PetscSqrtReal(best);
-    for (int d = 0; d < 3; ++d) v1[d] /= best;
+    best = 1.0 / PetscSqrtReal(best);
+    for (int d = 0; d < 3; ++d) v1[d] *= best;
   }
   /* an orthonormal pair spanning the plane normal to v1: start from the axis least aligned with it */
   {
@@ -103,8 +104,8 @@ void IndSymEigen(const PetscReal S[6], PetscReal lambda[3], PetscReal V[9])
       if (PetscAbsReal(v1[d]) < PetscAbsReal(v1[k])) k = d;
     e[k] = 1.0;
     Cross(v1, e, u1);
-    n = PetscSqrtReal(u1[0] * u1[0] + u1[1] * u1[1] + u1[2] * u1[2]);
-    for (int d = 0; d < 3; ++d) u1[d] /= n;
+    n = 1.0 / PetscSqrtReal(u1[0] * u1[0] + u1[1] * u1[1] + u1[2] * u1[2]);
+    for (int d = 0; d < 3; ++d) u1[d] *= n;
     Cross(v1, u1, u2);
   }
   {
@@ -117,12 +118,15 @@ void IndSymEigen(const PetscReal S[6], PetscReal lambda[3], PetscReal V[9])
     b = u1[0] * Bu2[0] + u1[1] * Bu2[1] + u1[2] * Bu2[2];
     d = u2[0] * Bu2[0] + u2[1] * Bu2[1] + u2[2] * Bu2[2];
     /* one Jacobi rotation (c, s) = (cos, sin) in the (u1, u2) plane diagonalises [[a, b], [b, d]];
-       t = s / c is the smaller root of t^2 + 2 theta t - 1 = 0 */
+       t = s / c is the smaller root of t^2 + 2 theta t - 1 = 0, theta = tau / beta, tau = d - a, beta = 2 b:
+       t = sign(theta) |beta| / (|tau| + sqrt(tau^2 + beta^2)), c = 1 / sqrt(1 + t^2), scaled free of divisions */
     if (b != 0) {
-      const PetscReal theta = (d - a) / (2.0 * b);
-      t = (theta >= 0 ? 1.0 : -1.0) / (PetscAbsReal(theta) + PetscSqrtReal(theta * theta + 1.0));
-      c = 1.0 / PetscSqrtReal(t * t + 1.0);
-      s = t * c;
+      const PetscReal tau = d - a, beta = 2.0 * b, sgn = tau * beta >= 0 ? 1.0 : -1.0;
+      const PetscReal den = PetscAbsReal(tau) + PetscSqrtReal(tau * tau + beta * beta), ab = sgn * PetscAbsReal(beta);
+      const PetscReal ir = 1.0 / PetscSqrtReal(den * den + beta * beta);
+      t = ab / den;
+      c = den * ir;
+      s = ab * ir;
     }
     for (int i = 0; i < 3; ++i) {
       w[i] = c * u1[i] - s * u2[i];
@@ -145,12 +149,12 @@ void IndSymEigen(const PetscReal S[6], PetscReal lambda[3], PetscReal V[9])
    no logarithm is evaluated here. */
 static inline PetscReal F1(PetscReal a, PetscReal b, PetscReal La, PetscReal Lb)
 {
-  const PetscReal d = a - b, x = d / (1.0 + b);
+  const PetscReal d = a - b, ib = 1.0 / (1.0 + b), x = d * ib;
   if (PetscAbsReal(x) < 1e-2) {
     static const PetscReal inv[10] = {0, 1.0, 1.0 / 2, 1.0 / 3, 1.0 / 4, 1.0 / 5, 1.0 / 6, 1.0 / 7, 1.0 / 8, 1.0 / 9};
     PetscReal              s       = 0.1;
     for (int n = 9; n >= 1; --n) s = inv[n] - x * s;
-    return 0.5 * s / (1.0 + b);
+    return 0.5 * s * ib;
   }
   return 0.5 * (La - Lb) / d;
 }
@@ -163,38 +167,26 @@ static inline PetscReal F1(PetscReal a, PetscReal b, PetscReal La, PetscReal Lb)
 static inline PetscReal F2(const IndLogStrain *ls, int hi, int mid, int lo)
 {
   const PetscReal *mu = ls->lm1;
-  const PetscReal  m  = 1.0 + (mu[hi] + mu[mid] + mu[lo]) / 3.0;
+  const PetscReal  m  = 1.0 + (mu[hi] + mu[mid] + mu[lo]) * (1.0 / 3.0);
 
   if (mu[hi] - mu[lo] <= 2e-4 * m) {
     const PetscReal d0 = mu[hi] + 1.0 - m, d1 = mu[mid] + 1.0 - m, d2 = mu[lo] + 1.0 - m;
-    const PetscReal h2 = d0 * d0 + d1 * d1 + d2 * d2 + d0 * d1 + d0 * d2 + d1 * d2;
-    return -0.25 / (m * m) - h2 / (8.0 * m * m * m * m);
+    const PetscReal h2 = d0 * d0 + d1 * d1 + d2 * d2 + d0 * d1 + d0 * d2 + d1 * d2, im2 = 1.0 / (m * m);
+    return -im2 * (0.25 + 0.125 * h2 * im2);
   }
   return (ls->f1[3 * hi + mid] - ls->f1[3 * mid + lo]) / (mu[hi] - mu[lo]);
 }
 
-/* f2[9 i + 3 j + k] for all index triples: the 10 distinct values, each computed once with its
-   arguments in the order of the eigenvalues, copied to its permutations. */
-static void F2Table(const IndLogStrain *ls, PetscReal f2[27])
+/* f2 of any three eigenvalues, its arguments put in their order first. */
+static inline PetscReal F2Any(const IndLogStrain *ls, int i, int j, int k)
 {
   const PetscReal *mu = ls->lm1;
-  int              o[3] = {0, 1, 2};
+  int              t;
 
-  for (int p = 0; p < 2; ++p)
-    for (int q = 0; q < 2 - p; ++q)
-      if (mu[o[q]] < mu[o[q + 1]]) {
-        const int t = o[q];
-        o[q]        = o[q + 1];
-        o[q + 1]    = t;
-      }
-  for (int p = 0; p < 3; ++p)
-    for (int q = p; q < 3; ++q)
-      for (int r = q; r < 3; ++r) {
-        const int       i = o[p], j = o[q], k = o[r];
-        const PetscReal v = F2(ls, i, j, k);
-        f2[9 * i + 3 * j + k] = f2[9 * i + 3 * k + j] = f2[9 * j + 3 * i + k] = v;
-        f2[9 * j + 3 * k + i] = f2[9 * k + 3 * i + j] = f2[9 * k + 3 * j + i] = v;
-      }
+  if (mu[i] < mu[j]) t = i, i = j, j = t;
+  if (mu[j] < mu[k]) t = j, j = k, k = t;
+  if (mu[i] < mu[j]) t = i, i = j, j = t;
+  return F2(ls, i, j, k);
 }
 
 int IndLogStrainFromGradient(const PetscReal H[9], IndLogStrain *ls, PetscReal E[6])
@@ -218,8 +210,11 @@ int IndLogStrainFromGradient(const PetscReal H[9], IndLogStrain *ls, PetscReal E
     ls->L[k]  = Log1p(ls->lm1[k]);
     Em[4 * k] = 0.5 * ls->L[k];
   }
-  for (int i = 0; i < 3; ++i)
-    for (int j = i; j < 3; ++j) ls->f1[3 * i + j] = ls->f1[3 * j + i] = F1(ls->lm1[i], ls->lm1[j], ls->L[i], ls->L[j]);
+  for (int i = 0; i < 3; ++i) {
+    ls->f1[4 * i] = 0.5 / (1.0 + ls->lm1[i]); /* f'(l) = 1 / (2 l) */
+    for (int j = i + 1; j < 3; ++j)
+      ls->f1[3 * i + j] = ls->f1[3 * j + i] = F1(ls->lm1[i], ls->lm1[j], ls->L[i], ls->L[j]);
+  }
   {
     PetscReal Eg[9];
     OutOfBasis(ls->N, Em, Eg);
@@ -228,15 +223,22 @@ int IndLogStrainFromGradient(const PetscReal H[9], IndLogStrain *ls, PetscReal E
   return 0;
 }
 
-void IndLogStrainStress(const IndLogStrain *ls, const PetscReal T[6], PetscReal S[6])
+void IndLogStrainStressFromBasis(const IndLogStrain *ls, const PetscReal Tt[9], PetscReal S[6])
 {
-  PetscReal Tm[9], Tt[9], St[9], Sm[9];
+  PetscReal St[9], Sm[9];
 
-  ToMatrix(T, Tm);
-  IntoBasis(ls->N, Tm, Tt);
   for (int k = 0; k < 9; ++k) St[k] = 2.0 * ls->f1[k] * Tt[k];
   OutOfBasis(ls->N, St, Sm);
   ToVoigt(Sm, 1.0, S);
+}
+
+void IndLogStrainStress(const IndLogStrain *ls, const PetscReal T[6], PetscReal S[6])
+{
+  PetscReal Tm[9], Tt[9];
+
+  ToMatrix(T, Tm);
+  IntoBasis(ls->N, Tm, Tt);
+  IndLogStrainStressFromBasis(ls, Tt, S);
 }
 
 /* Voigt pairs: entry v of a Voigt vector is the tensor component (va[v], vb[v]). */
@@ -261,15 +263,9 @@ static void SymSandwich(const PetscReal L[36], const PetscReal A[36], PetscReal 
     }
 }
 
-void IndLogStrainTangent(const IndLogStrain *ls, const PetscReal T[6], const PetscReal DT[36], PetscBool isotropic,
-                         PetscReal DS[36])
+/* R rotates tensor-Voigt vectors into the eigenbasis (A~ = N^T A N). */
+static void VoigtRotation(const PetscReal N[9], PetscReal R[36])
 {
-  const PetscReal *N = ls->N, *f1 = ls->f1;
-  PetscReal        R[36], ReT[36], Tt[9], DTt[36], M[36], f2[27];
-
-  /* R rotates tensor-Voigt vectors into the eigenbasis (A~ = N^T A N); engineering strains rotate with
-     Re = W R W^-1 = R^-T (W = diag(1,1,1,2,2,2): the contraction of a stress with a strain is
-     invariant), so a tangent D (engineering to tensor) becomes R D R^T there and Re^T D~ Re back. */
   for (int v = 0; v < 6; ++v) {
     const int a = va[v], b = vb[v];
     for (int i = 0; i < 3; ++i) R[6 * v + i] = N[3 * i + a] * N[3 * i + b];
@@ -278,33 +274,67 @@ void IndLogStrainTangent(const IndLogStrain *ls, const PetscReal T[6], const Pet
       R[6 * v + w] = N[3 * i + a] * N[3 * j + b] + N[3 * j + a] * N[3 * i + b];
     }
   }
-  {
-    PetscReal Tm[9];
-    ToMatrix(T, Tm);
-    IntoBasis(N, Tm, Tt);
+}
+
+void IndLogStrainIntoBasis(const IndLogStrain *ls, const PetscReal A[6], PetscReal At[9])
+{
+  PetscReal Am[9];
+
+  ToMatrix(A, Am);
+  IntoBasis(ls->N, Am, At);
+}
+
+void IndLogStrainTangentEigen(const IndLogStrain *ls, const PetscReal Tt[9], const PetscReal DT[36],
+                              PetscBool isotropic, PetscReal M[36])
+{
+  const PetscReal *f1 = ls->f1, *D = DT;
+  PetscReal        DTt[36], fv[6], f2p[3], f2pq[9], f2x;
+
+  /* an isotropic tangent (elastic) is the same in every basis; another is rotated there as R DT R^T
+     (engineering strains rotate with R^-T, so that the contraction with a stress is invariant) */
+  if (!isotropic) {
+    PetscReal R[36];
+    VoigtRotation(ls->N, R);
+    SymSandwich(R, DT, DTt);
+    D = DTt;
   }
-  F2Table(ls, f2);
-  /* an isotropic tangent (elastic) is the same in every basis */
-  if (isotropic) PetscArraycpy(DTt, DT, 36);
-  else SymSandwich(R, DT, DTt);
+  /* f1 by Voigt pair, and the 10 distinct second divided differences: f2(p, p, p), f2(p, p, q), f2(0, 1, 2) */
+  for (int v = 0; v < 6; ++v) fv[v] = f1[3 * va[v] + vb[v]];
+  for (int p = 0; p < 3; ++p) {
+    f2p[p] = F2(ls, p, p, p);
+    for (int q = 0; q < 3; ++q)
+      if (q != p) f2pq[3 * p + q] = F2Any(ls, p, p, q);
+  }
+  f2x = F2Any(ls, 0, 1, 2);
   /* In the eigenbasis, per unit engineering strain e_(cd): dE~ = 2 f1_cd e_(cd) (engineering) and
      dS~_ab = 2 f1_ab dT~_ab + 2 [d_ac f2_abd T~_db + d_ad f2_abc T~_cb + d_bd f2_abc T~_ac + d_bc f2_abd T~_ad],
      the bracket from T : d2E[dC, .] with dC~ = e_c e_d^T + e_d e_c^T; symmetric in (ab, cd) as the
-     second derivative of a potential. */
-  for (int v = 0; v < 6; ++v) {
-    const int       a = va[v], b = vb[v];
-    const PetscReal fab = 4.0 * f1[3 * a + b];
+     second derivative of a potential. The bracket, by the kinds of the pairs (ab) and (cd): */
+  for (int v = 0; v < 6; ++v)
     for (int w = v; w < 6; ++w) {
-      const int c = va[w], d = vb[w];
-      PetscReal g = 0;
-      if (a == c) g += f2[9 * a + 3 * b + d] * Tt[3 * d + b];
-      if (a == d) g += f2[9 * a + 3 * b + c] * Tt[3 * c + b];
-      if (b == d) g += f2[9 * a + 3 * b + c] * Tt[3 * a + c];
-      if (b == c) g += f2[9 * a + 3 * b + d] * Tt[3 * a + d];
-      M[6 * v + w] = M[6 * w + v] = fab * DTt[6 * v + w] * f1[3 * c + d] + 2.0 * g;
+      const int a = va[v], b = vb[v], c = va[w], d = vb[w];
+      PetscReal g;
+      if (w < 3) g = v == w ? 4.0 * f2p[a] * Tt[4 * a] : 0.0; /* (pp, rr) */
+      else if (v < 3) /* (pp, cd): f2(p, p, q) T~_pq, q the other index of (cd) when p is one of them */
+        g = a == c ? 2.0 * f2pq[3 * a + d] * Tt[3 * a + d] : a == d ? 2.0 * f2pq[3 * a + c] * Tt[3 * a + c] : 0.0;
+      else if (v == w) g = f2pq[3 * b + a] * Tt[4 * b] + f2pq[3 * a + b] * Tt[4 * a]; /* (ab, ab) */
+      else { /* two shear pairs share one index: f2(0, 1, 2) T~_xy, x and y their other indices */
+        const int x = (a == c || a == d) ? b : a, y = (c == a || c == b) ? d : c;
+        g = f2x * Tt[3 * x + y];
+      }
+      M[6 * v + w] = M[6 * w + v] = 4.0 * fv[v] * D[6 * v + w] * fv[w] + 2.0 * g;
     }
-  }
-  /* DS = Re^T M Re, Re = W R W^-1 */
+}
+
+void IndLogStrainTangent(const IndLogStrain *ls, const PetscReal T[6], const PetscReal DT[36], PetscBool isotropic,
+                         PetscReal DS[36])
+{
+  PetscReal R[36], ReT[36], Tt[9], M[36];
+
+  IndLogStrainIntoBasis(ls, T, Tt);
+  IndLogStrainTangentEigen(ls, Tt, DT, isotropic, M);
+  /* DS = Re^T M Re, Re = W R W^-1 (W = diag(1,1,1,2,2,2)) the rotation of engineering strains */
+  VoigtRotation(ls->N, R);
   for (int v = 0; v < 6; ++v)
     for (int w = 0; w < 6; ++w) ReT[6 * v + w] = R[6 * w + v] * (w < 3 ? 1.0 : 2.0) / (v < 3 ? 1.0 : 2.0);
   SymSandwich(ReT, M, DS);

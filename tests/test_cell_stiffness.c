@@ -1,0 +1,95 @@
+/* Unit test of the cell matrix by the partition of unity (IndCellMatrixCompleteLastNode, src/physics/assembly.c):
+   the kinematics' stiffness computed for the first nb - 1 nodes and the last node's rows and columns completed
+   from them equals the stiffness computed for all nb nodes, for both kinematics, linear tetrahedra and
+   hexahedra, elastic and plastic points, one and several quadrature points. Gradients that do not sum to zero
+   (a control) must make the two differ: the comparison can fail. */
+#include <string.h>
+#include "assembly_impl.h"
+#include "ind_hardening.h"
+#include "unit_report.h"
+
+enum { MAXNB = 8, MAXND = 3 * MAXNB, NQ = 3 };
+
+/* Random gradients of nb shape functions at a point, summing to zero unless control is set. */
+static void Gradients(unsigned long long *seed, PetscInt nb, PetscBool control, PetscReal *G)
+{
+  for (int j = 0; j < 3; ++j) {
+    PetscReal s = 0;
+    for (PetscInt a = 0; a < nb - 1; ++a) {
+      G[3 * a + j] = 2.0 * Rand(seed) - 1.0;
+      s += G[3 * a + j];
+    }
+    G[3 * (nb - 1) + j] = -s + (control ? 0.5 : 0.0);
+  }
+}
+
+/* Max |K1 - K2| / max |K1| over the cell matrices of nq points (each with its own gradients and weight). */
+static PetscReal Compare(const IndKinematics *kin, const IndMaterial *m, PetscInt nb, PetscReal amp, PetscBool hist,
+                         PetscBool control, unsigned long long *seed)
+{
+  const PetscInt nd = 3 * nb;
+  PetscReal      full[MAXND * MAXND] = {0}, part[MAXND * MAXND] = {0}, B[6 * MAXND], DB[6 * MAXND], kmax = 0, dmax = 0;
+
+  for (int q = 0; q < NQ; ++q) {
+    PetscReal G[3 * MAXNB], u[MAXND], old[IND_HISTORY_NVAL] = {0}, w = 0.5 + Rand(seed);
+    Gradients(seed, nb, control, G);
+    for (PetscInt k = 0; k < nd; ++k) u[k] = amp * (2.0 * Rand(seed) - 1.0);
+    if (hist) {
+      for (int k = 0; k < 3; ++k) old[k] = 0.01 * (2.0 * Rand(seed) - 1.0);
+      old[2] = -(old[0] + old[1]);
+      for (int k = 3; k < 6; ++k) old[k] = 0.01 * (2.0 * Rand(seed) - 1.0);
+      old[12] = 0.02;
+    }
+    (void)kin->stiffness(m, IND_TANGENT_CONSISTENT, nb, nb, G, NULL, u, old, w, B, DB, full);
+    (void)kin->stiffness(m, IND_TANGENT_CONSISTENT, nb, nb - 1, G, NULL, u, old, w, B, DB, part);
+  }
+  for (PetscInt r = 1; r < nd; ++r)
+    for (PetscInt c = 0; c < r; ++c) full[r * nd + c] = full[c * nd + r];
+  IndCellMatrixCompleteLastNode(nb, part);
+  for (PetscInt k = 0; k < nd * nd; ++k) {
+    kmax = PetscMax(kmax, PetscAbsReal(full[k]));
+    dmax = PetscMax(dmax, PetscAbsReal(full[k] - part[k]));
+  }
+  for (PetscInt r = 0; r < nd; ++r) /* the completed matrix is exactly symmetric */
+    for (PetscInt c = 0; c < r; ++c)
+      if (part[r * nd + c] != part[c * nd + r]) dmax = PETSC_MAX_REAL;
+  return dmax / kmax;
+}
+
+int main(int argc, char **argv)
+{
+  unsigned long long seed = 20261128ULL;
+  IndMaterial        m;
+
+  PetscCall(PetscInitialize(&argc, &argv, NULL, NULL));
+  memset(&m, 0, sizeof(m));
+  m.model = IND_MODEL_PLASTIC;
+  IndElasticModuli(70.0, 0.3, &m.kappa, &m.mu);
+  m.plastic.kappa = m.kappa;
+  m.plastic.mu    = m.mu;
+  m.plastic.R0    = 0.3;
+  IndHardeningSetLinear(&m.plastic, 1.0);
+  printf("cell stiffness completed by the partition of unity against the whole computation\n");
+  for (int f = 0; f < 2; ++f) {
+    const IndKinematics *kin = f ? IndKinematicsFinite() : IndKinematicsSmall();
+    for (PetscInt nb = 4; nb <= 8; nb += 4)
+      for (int c = 0; c < 3; ++c) { /* elastic, plastic, and plastic from a plastic history */
+        const PetscReal amp  = c == 0 ? 1e-4 : 0.05;
+        const PetscBool hist = c == 2 ? PETSC_TRUE : PETSC_FALSE;
+        char            what[128];
+        PetscReal       worst = 0;
+        for (int t = 0; t < 50; ++t) worst = PetscMax(worst, Compare(kin, &m, nb, amp, hist, PETSC_FALSE, &seed));
+        PetscCall(PetscSNPrintf(what, sizeof(what), "%s, %" PetscInt_FMT " nodes, %s", kin->name, nb,
+                                c == 0 ? "elastic" : c == 1 ? "plastic" : "plastic history"));
+        Report(what, worst, 1e-13);
+      }
+    {
+      /* the control: gradients that do not sum to zero are not completed right */
+      const PetscReal d = Compare(kin, &m, 4, 1e-3, PETSC_FALSE, PETSC_TRUE, &seed);
+      Report(f ? "finite, control: gradients not summing to zero differ (1 / difference)"
+               : "small, control: gradients not summing to zero differ (1 / difference)", 1.0 / d, 1e3);
+    }
+  }
+  PetscCall(PetscFinalize());
+  return failures ? 1 : 0;
+}
