@@ -95,9 +95,20 @@ static PetscReal MaxAbs(const PetscReal *a, int n)
 
 static const PetscReal identity[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
 
+static void Sort3(PetscReal v[3])
+{
+  for (int p = 0; p < 2; ++p)
+    for (int q = 0; q < 2 - p; ++q)
+      if (v[q] > v[q + 1]) {
+        const PetscReal t = v[q];
+        v[q]              = v[q + 1];
+        v[q + 1]          = t;
+      }
+}
+
 static void TestEigen(unsigned long long *seed)
 {
-  PetscReal worst = 0, worst_o = 0;
+  PetscReal worst = 0, worst_o = 0, worst_l = 0;
   for (int t = 0; t < 300; ++t) {
     PetscReal Q[9], lam[3], V[9], s[3] = {2 * Rand(seed), 2 * Rand(seed), 2 * Rand(seed)}, A[6], Am[9];
     if (t % 3 == 1) s[1] = s[0];                 /* a double eigenvalue */
@@ -106,6 +117,12 @@ static void TestEigen(unsigned long long *seed)
     Deformation(identity, Q, s, Am);
     A[0] = Am[0], A[1] = Am[4], A[2] = Am[8], A[3] = Am[1], A[4] = Am[5], A[5] = Am[2];
     IndSymEigen(A, lam, V);
+    {
+      PetscReal l[3] = {lam[0], lam[1], lam[2]}, e[3] = {s[0], s[1], s[2]};
+      Sort3(l);
+      Sort3(e);
+      for (int k = 0; k < 3; ++k) worst_l = PetscMax(worst_l, PetscAbsReal(l[k] - e[k]) / e[2]);
+    }
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) {
         PetscReal r = 0, o = 0;
@@ -119,6 +136,34 @@ static void TestEigen(unsigned long long *seed)
   }
   Report("eigen: V diag(l) V^T = A (random, double, near-triple), relative", worst, 1e-14);
   Report("eigen: V^T V = I", worst_o, 1e-14);
+  Report("eigen: the eigenvalues, relative to the largest", worst_l, 1e-14);
+}
+
+/* Small strains: C - I of size 1e-6 with a random orientation, its eigenvalues (double, triple-ish, distinct),
+   relative to the largest: the decomposition of C - I keeps the digits that F = I + H would round away. */
+static void TestEigenSmall(unsigned long long *seed)
+{
+  PetscReal worst = 0;
+  for (int t = 0; t < 300; ++t) {
+    PetscReal Q[9], lam[3], V[9], A[6], Am[9], e[3];
+    PetscReal s[3] = {1e-6 * (2 * Rand(seed) - 1), 1e-6 * (2 * Rand(seed) - 1), 1e-6 * (2 * Rand(seed) - 1)};
+    if (t % 3 == 1) s[1] = s[0];
+    if (t % 3 == 2) s[1] = s[2] = s[0] * (1 + 1e-9);
+    RandomRotation(seed, Q);
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) {
+        Am[3 * i + j] = 0;
+        for (int k = 0; k < 3; ++k) Am[3 * i + j] += Q[3 * i + k] * s[k] * Q[3 * j + k];
+      }
+    A[0] = Am[0], A[1] = Am[4], A[2] = Am[8], A[3] = Am[1], A[4] = Am[5], A[5] = Am[2];
+    IndSymEigen(A, lam, V);
+    Sort3(lam);
+    for (int k = 0; k < 3; ++k) e[k] = s[k];
+    Sort3(e);
+    for (int k = 0; k < 3; ++k)
+      worst = PetscMax(worst, PetscAbsReal(lam[k] - e[k]) / PetscMax(PetscAbsReal(e[0]), PetscAbsReal(e[2])));
+  }
+  Report("eigen: eigenvalues of a C - I of 1e-6, relative to the largest", worst, 1e-14);
 }
 
 /* E of F = R Q diag(s) Q^T is Q diag(ln s) Q^T; the spatial one is R E R^T. */
@@ -432,6 +477,7 @@ int main(int argc, char **argv)
   unsigned long long seed = 12345;
   PetscCall(PetscInitialize(&argc, &argv, NULL, NULL));
   TestEigen(&seed);
+  TestEigenSmall(&seed);
   TestHencky(&seed);
   TestDerivatives(&seed);
   TestIsotropicTangent(&seed);
