@@ -275,10 +275,18 @@ def check_section(out, profile, curve):
     check(np.hypot(g[j], g[i]) <= xr / nx, f"deepest pixel {z.min():.5g} nm at ({g[j]:.4g}, {g[i]:.4g}) nm, on the "
           f"axis (deepest vertex {h.min():.5g} nm)")
     data = np.loadtxt(os.path.join(out, "imprint.xyz"))
-    pts = np.column_stack([X.ravel(), Y.ravel(), ref.ravel()])
-    ok = data.shape == pts.shape
-    check(ok and close(data[np.lexsort((data[:, 1], data[:, 0]))], pts[np.lexsort((pts[:, 1], pts[:, 0]))], 1e-9, 1e-9),
-          f"imprint.xyz: the {len(pts)} pixels of imprint.gsf with the profile's heights, read {data.shape}")
+    pts = np.column_stack([X.ravel(), Y.ravel()])
+    ok = data.shape == (len(pts), 3)
+    if ok:
+        data = data[np.lexsort((data[:, 1], data[:, 0]))]
+        pts = pts[np.lexsort((pts[:, 1], pts[:, 0]))]
+        # the pixels to the 10 digits of the GSF header's width; each height the profile's at the pixel's own printed
+        # position, to 10 digits, plus what the 10 digits of that position change it by along the profile's slope
+        slope = np.abs(np.diff(h) / np.diff(r)).max()
+        rad = np.hypot(data[:, 0], data[:, 1])
+        ok = close(data[:, :2], pts, 0.0, 1e-9 * xr) and close(data[:, 2], np.interp(rad, r, h), 1e-9,
+                                                                    1e-9 + 1e-9 * slope * rad.max())
+    check(ok, f"imprint.xyz: the {len(pts)} pixels of imprint.gsf with the profile's heights, read {data.shape}")
 
 
 def check_fit_reads(out, run_dir):
