@@ -10,7 +10,7 @@ static const char help[] =
 #include <string.h>
 #include <petsctime.h>
 #include "assembly_impl.h"
-#include "ind_hardening.h"
+#include "point_material.h"
 
 enum { NP = 4096, MAXNB = 8, MAXND = 24 };
 
@@ -88,17 +88,10 @@ static PetscErrorCode Time(const IndKinematics *kin, const IndMaterial *m, Petsc
 int main(int argc, char **argv)
 {
   PetscInt    repeat = 7;
-  IndMaterial m;
+  IndMaterial m      = PointTestMaterial();
 
   PetscCall(PetscInitialize(&argc, &argv, NULL, help));
   PetscCall(PetscOptionsGetInt(NULL, NULL, "-repeat", &repeat, NULL));
-  memset(&m, 0, sizeof(m));
-  m.model = IND_MODEL_PLASTIC;
-  IndElasticModuli(70.0, 0.3, &m.kappa, &m.mu);
-  m.plastic.kappa = m.kappa;
-  m.plastic.mu    = m.mu;
-  m.plastic.R0    = 0.3;
-  IndHardeningSetLinear(&m.plastic, 1.0);
   PetscCall(PetscPrintf(PETSC_COMM_WORLD, "| cell | point | plastic points | small: stiffness, stress (ns) | "
                                           "finite: stiffness, stress (ns) | finite / small stiffness |\n"
                                           "|---|---|---|---|---|---|\n"));

@@ -5,7 +5,7 @@
    (a control) must make the two differ: the comparison can fail. */
 #include <string.h>
 #include "assembly_impl.h"
-#include "ind_hardening.h"
+#include "point_material.h"
 #include "unit_report.h"
 
 enum { MAXNB = 8, MAXND = 3 * MAXNB, NQ = 3 };
@@ -59,16 +59,9 @@ static PetscReal Compare(const IndKinematics *kin, const IndMaterial *m, PetscIn
 int main(int argc, char **argv)
 {
   unsigned long long seed = 20261128ULL;
-  IndMaterial        m;
+  IndMaterial        m    = PointTestMaterial();
 
   PetscCall(PetscInitialize(&argc, &argv, NULL, NULL));
-  memset(&m, 0, sizeof(m));
-  m.model = IND_MODEL_PLASTIC;
-  IndElasticModuli(70.0, 0.3, &m.kappa, &m.mu);
-  m.plastic.kappa = m.kappa;
-  m.plastic.mu    = m.mu;
-  m.plastic.R0    = 0.3;
-  IndHardeningSetLinear(&m.plastic, 1.0);
   printf("cell stiffness completed by the partition of unity against the whole computation\n");
   for (int f = 0; f < 2; ++f) {
     const IndKinematics *kin = f ? IndKinematicsFinite() : IndKinematicsSmall();
