@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Benchmark suite: runs named cases of indent and prints (and saves as CSV and a Markdown table) per
 case: dofs, ranks, load steps, Newton, outer and Krylov iterations (totals, per step, per Newton
-iteration), wall time per step, the split of the run from -log_view (residual, Jacobian with the
+iteration; the totals include the attempts cut back, whose share is given apart), wall time per step, the split of the run from -log_view (residual, Jacobian with the
 return map, contact, preconditioner setup, Krylov, output) and the peak memory per rank and per dof.
 
   scripts/bench.py                       # the default set (fits a 2-core machine in ~10 min)
@@ -163,6 +163,14 @@ def run_case(name, opts, np, build, workdir, extra):
                 tot[key] += int(mm.group(1))
     if not tot["outer"]:
         tot["outer"] = row["steps"]
+    # the attempts cut back cost iterations too: counted apart, and in the totals that the rates divide
+    rej = {"newton": 0, "linear": 0}
+    for s in re.findall(r"rejected after newton (\d+) linear (\d+)", proc.stdout):
+        rej["newton"] += int(s[0])
+        rej["linear"] += int(s[1])
+    row["newton_rejected"], row["linear_rejected"] = rej["newton"], rej["linear"]
+    tot["newton"] += rej["newton"]
+    tot["linear"] += rej["linear"]
     row.update(tot)
     split = log_split(logv) if os.path.exists(logv) else {}
     for col in SPLIT:
@@ -200,8 +208,9 @@ def run_case(name, opts, np, build, workdir, extra):
 
 
 COLUMNS = [("case", "case", "{}"), ("dofs", "dofs", "{:,}"), ("ranks", "ranks", "{}"), ("steps", "steps", "{}"),
-           ("cutbacks", "cut", "{}"), ("newton", "Newton", "{}"), ("newton_per_step", "/step", "{:.1f}"),
-           ("outer", "outer", "{}"), ("outer_per_step", "/step", "{:.2f}"), ("linear", "Krylov", "{}"),
+           ("cutbacks", "cut", "{}"), ("newton", "Newton", "{}"), ("newton_rejected", "in cut", "{}"),
+           ("newton_per_step", "/step", "{:.1f}"), ("outer", "outer", "{}"), ("outer_per_step", "/step", "{:.2f}"),
+           ("linear", "Krylov", "{}"), ("linear_rejected", "in cut", "{}"),
            ("krylov_per_newton", "/Newton", "{:.1f}"), ("wall_s", "wall s", "{:.1f}"), ("s_per_step", "s/step", "{:.2f}"),
            ("solve_s", "solve s", "{:.1f}"), ("residual_s", "resid s", "{:.2f}"), ("jacobian_s", "Jac s", "{:.2f}"),
            ("contact_s", "contact s", "{:.2f}"),

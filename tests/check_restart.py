@@ -10,6 +10,7 @@ options or another mesh is refused with one line naming the difference, leaving 
 import hashlib
 import json
 import os
+import re
 import shutil
 import signal
 import subprocess
@@ -111,6 +112,24 @@ def compare(ref, got, rtol, label):
     return not bad
 
 
+def rejected_work(*outputs):
+    """Newton and linear iterations of the attempts cut back, from the runs' printed rejections."""
+    found = [m for out in outputs for m in re.findall(r"rejected after newton (\d+) linear (\d+)", out)]
+    return sum(int(n) for n, _ in found), sum(int(l) for _, l in found)
+
+
+def check_rejected(d, outputs, label):
+    """summary.json's iterations of the attempts cut back are those the run printed (all its parts), and some."""
+    s = json.load(open(os.path.join(d, "summary.json")))
+    newton, linear = rejected_work(*outputs)
+    got = (s.get("newton_rejected"), s.get("linear_rejected"))
+    ok = newton > 0 and got == (newton, linear)
+    print(f"  {label}: summary's iterations of the attempts cut back {got}, printed {(newton, linear)}")
+    if not ok:
+        print(f"FAIL ({label}): expected cut-back attempts, and the summary's counts equal to the printed ones")
+    return ok
+
+
 def refused(args, nranks, options, d, extra, expect, label):
     before = digest(d)
     code, out = launch(args, nranks, options, d, extra)
@@ -132,6 +151,8 @@ def main():
     ap.add_argument("--rtol", type=float, default=1e-10)
     ap.add_argument("--changed-option", metavar="OPTION=VALUE", help="a model option to change for a refused restart")
     ap.add_argument("--mesh-change", metavar="OPTION=VALUE", help="an option that changes the mesh, for a refused restart")
+    ap.add_argument("--expect-rejected", action="store_true",
+                    help="the run cuts steps back (not -quiet): its summary counts their iterations, across the restart")
     args = ap.parse_args(argv)
     first, second = [int(n) for n in args.np.split(",")]
     shutil.rmtree(args.workdir, ignore_errors=True)
@@ -143,6 +164,7 @@ def main():
         print(out)
         print(f"FAIL: the uninterrupted run exited with {code}")
         return 1
+    ref_out = out
 
     if args.signal:
         proc = launch(args, first, options, part, wait=False)
@@ -159,6 +181,7 @@ def main():
     else:
         code, out = launch(args, first, options, part, ["-checkpoint_stop_after_step", str(args.stop)])
     print(out, end="")
+    stopped_out = out
     ok = code == EXIT_CHECKPOINTED and os.path.exists(os.path.join(part, "checkpoint.h5")) \
         and not os.path.exists(os.path.join(part, "summary.json")) and "-restart" in out
     print(f"  stopped run: exit {code} (expected {EXIT_CHECKPOINTED}), checkpoint "
@@ -186,6 +209,9 @@ def main():
         print(f"FAIL: the restarted run exited with {code}")
         return 1
     good &= compare(ref, part, args.rtol, f"{first} -> {second} ranks")
+    if args.expect_rejected:
+        good &= check_rejected(ref, [ref_out], "uninterrupted run")
+        good &= check_rejected(part, [stopped_out, out], "stopped and restarted run")
     print("restart reproduces the uninterrupted run" if good else "FAIL")
     return 0 if good else 1
 

@@ -30,6 +30,7 @@ typedef struct {
   IndContact     contact;    /* for the check of the Oliver-Pharr area against the surface */
   IndWarnings   *warnings;   /* the run's; the summary's own are added */
   PetscBool      slid;       /* the indenter slid (a scratch): no Oliver-Pharr analysis */
+  PetscInt       rejected_newton, rejected_linear; /* iterations of the attempts cut back, whole run */
 } IndRunInfo;
 
 /* Prints the summary (when print is true); rank 0 writes the two files into dir when write is true,

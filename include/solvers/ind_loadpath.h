@@ -34,6 +34,7 @@ typedef struct {
   PetscReal edge_steps;   /* -load_edge_steps: loading steps at least this many per node spacing the contact's
                              edge crosses (0: no limit) */
   PetscInt  accepted, cutbacks, cutbacks_in_a_row;
+  PetscInt  rejected_newton, rejected_linear; /* iterations spent in the attempts that were cut back */
 } IndLoadPath;
 
 /* unload_default: whether the program unloads unless -load_unload says otherwise (an indentation does). */

@@ -302,6 +302,11 @@ PetscErrorCode IndSummaryFinish(IndSummary s, const IndIndenter *ind, const IndR
   Put(e, &ne, "newton", "Newton iterations", "", (PetscReal)newton, PETSC_TRUE);
   Put(e, &ne, "uzawa", "outer (Uzawa) iterations", "", (PetscReal)outer, PETSC_TRUE);
   Put(e, &ne, "linear", "linear iterations", "", (PetscReal)linear, PETSC_TRUE);
+  /* the counts above are the accepted attempts'; what the cut-back ones cost is work the run did too */
+  Put(e, &ne, "newton_rejected", "Newton iterations of the attempts cut back", "", (PetscReal)info->rejected_newton,
+    PETSC_TRUE);
+  Put(e, &ne, "linear_rejected", "linear iterations of the attempts cut back", "", (PetscReal)info->rejected_linear,
+    PETSC_TRUE);
   Put(e, &ne, "wall_time_s", "wall time of the run", "s", (PetscReal)info->wall, PETSC_FALSE);
 
   if (print) {

@@ -7,7 +7,9 @@
 #include "ind_rundir.h"
 #include "ind_version.h"
 
-#define FORMAT "indent checkpoint 4" /* 3: a checksum on every dataset; 4: each object writes its own part */
+/* 3: a checksum on every dataset; 4: each object writes its own part; 5: the load path keeps the iterations of
+   the attempts it cut back */
+#define FORMAT "indent checkpoint 5"
 
 /* Options that do not change the answer, only how it is computed, shown or stored: a restart may
    change them (a tighter tolerance to get past a hard step, another output directory layout...). */

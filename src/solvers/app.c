@@ -332,8 +332,12 @@ PetscErrorCode IndAppStep(IndApp app, IndStepResult *r)
   if (app->control) PetscCall(SolveLoadStep(app, t, r));
   else PetscCall(IndAppSolveStep(app, t, r));
   if (!r->converged) {
-    if (!app->quiet) PetscCall(PetscPrintf(app->comm, "  step to t = %.6f rejected (%s): cutting the increment\n",
-      (double)t, r->why));
+    if (!app->quiet)
+      PetscCall(PetscPrintf(app->comm,
+        "  step to t = %.6f rejected after newton %" PetscInt_FMT " linear %" PetscInt_FMT " (%s): cutting the "
+        "increment\n", (double)t, r->newton, r->linear, r->why));
+    lp->rejected_newton += r->newton;
+    lp->rejected_linear += r->linear;
     PetscCall(IndLoadPathReject(lp, app->comm, r->why));
   } else {
     /* With contact, Newton runs once per outer iteration: judge the step by its average. */
@@ -425,7 +429,8 @@ PetscErrorCode IndAppRun(IndApp app)
   PetscCall(IndAppElapsed(app));
   if (app->summary) {
     IndRunInfo info = {app->start_time, app->elapsed_before + app->elapsed_now, app->rundir.restart, app->contact,
-                       &app->warnings, app->scratch.length > 0 ? PETSC_TRUE : PETSC_FALSE};
+                       &app->warnings, app->scratch.length > 0 ? PETSC_TRUE : PETSC_FALSE, lp->rejected_newton,
+                       lp->rejected_linear};
     PetscCall(IndAppWriteSummary(app, &info));
   }
   /* The run is complete: its checkpoint could only restart a finished run. */

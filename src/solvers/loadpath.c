@@ -220,15 +220,17 @@ PetscErrorCode IndLoadPathReject(IndLoadPath *lp, MPI_Comm comm, const char why[
 PetscErrorCode IndLoadPathState(void *obj, IndStateFile f)
 {
   IndLoadPath *lp   = (IndLoadPath *)obj;
-  PetscReal    s[5] = {lp->t, lp->dt, (PetscReal)lp->accepted, (PetscReal)lp->cutbacks,
-                       (PetscReal)lp->cutbacks_in_a_row};
+  PetscReal    s[7] = {lp->t, lp->dt, (PetscReal)lp->accepted, (PetscReal)lp->cutbacks,
+                       (PetscReal)lp->cutbacks_in_a_row, (PetscReal)lp->rejected_newton, (PetscReal)lp->rejected_linear};
 
   PetscFunctionBeginUser;
-  PetscCall(IndStateReals(f, "position", 5, s));
+  PetscCall(IndStateReals(f, "position", 7, s));
   lp->t                 = s[0];
   lp->dt                = s[1];
   lp->accepted          = (PetscInt)s[2];
   lp->cutbacks          = (PetscInt)s[3];
   lp->cutbacks_in_a_row = (PetscInt)s[4];
+  lp->rejected_newton   = (PetscInt)s[5];
+  lp->rejected_linear   = (PetscInt)s[6];
   PetscFunctionReturn(PETSC_SUCCESS);
 }
