@@ -27,7 +27,7 @@ typedef struct {
   PetscReal J;      /* det F */
 } IndLogStrain;
 
-/* Eigen-decomposition of a symmetric 3x3 matrix (Voigt, tensor components), non-iterative and
+/* Eigen-decomposition of a symmetric 3x3 matrix (Voigt, tensor components), a fixed count of operations (no loop to convergence) and
    accurate for coincident eigenvalues: lambda[k] with unit eigenvector column k of V (V[3 i + k]). */
 void IndSymEigen(const PetscReal A[6], PetscReal lambda[3], PetscReal V[9]);
 

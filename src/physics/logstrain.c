@@ -65,9 +65,10 @@ static inline PetscReal CosThirdAcos(PetscReal c)
   return x;
 }
 
-/* Non-iterative, after Scherzinger & Dohrmann (CMAME 197 (2008) 4007): the eigenvalue farthest from
-   the other two comes accurately from the invariants of the deviator (the cosine is taken where it
-   is flat), its eigenvector as the largest cross product of two rows of B - eta I, and the other two
+/* A fixed sequence of operations, no loop to convergence, after Scherzinger & Dohrmann (CMAME 197 (2008) 4007):
+   the eigenvalue farthest from the other two comes accurately from the invariants of the deviator (as the root of
+   the triple-angle cubic, CosThirdAcos), its eigenvector as the largest cross product of two rows of B - eta I, and
+   the other two
    from the 2x2 problem in the plane normal to it, by one exact rotation. No case is ill-conditioned:
    coincident eigenvalues only leave the rotation angle free. */
 void IndSymEigen(const PetscReal S[6], PetscReal lambda[3], PetscReal V[9])
