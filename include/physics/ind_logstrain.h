@@ -27,8 +27,9 @@ typedef struct {
   PetscReal J;      /* det F */
 } IndLogStrain;
 
-/* Eigen-decomposition of a symmetric 3x3 matrix (Voigt, tensor components), a fixed count of operations (no loop to convergence) and
-   accurate for coincident eigenvalues: lambda[k] with unit eigenvector column k of V (V[3 i + k]). */
+/* Eigen-decomposition of a symmetric 3x3 matrix (Voigt, tensor components) by a fixed count of operations (no
+   loop to convergence), accurate for coincident eigenvalues: lambda[k] with unit eigenvector column k of V
+   (V[3 i + k]). */
 void IndSymEigen(const PetscReal A[6], PetscReal lambda[3], PetscReal V[9]);
 
 /* From the displacement gradient H = F - I (not F: stored as I + H, a strain of 1e-6 would keep only
