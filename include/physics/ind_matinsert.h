@@ -1,8 +1,9 @@
 #pragma once
 /* Adding element matrices into the Jacobian without searching its rows: the position of every
-   3 x 3 node block of every cell in the rank's AIJ arrays, found once. Rows owned by another rank go
-   through MatSetValues (the stash). NULL (and MatSetValues for everything) for other matrix types or
-   patterns that are not made of node blocks. */
+   3 x 3 node block of every cell in the rank's AIJ arrays, found once. Blocks of rows another rank owns are
+   summed on this rank and only their values sent to the owner's positions at the end (J then takes no
+   off-process MatSetValues: MAT_NO_OFF_PROC_ENTRIES). NULL (and MatSetValues for everything) for other matrix
+   types or patterns that are not made of node blocks. */
 #include <petscmat.h>
 #include "ind_disc.h"
 
@@ -13,5 +14,5 @@ PetscErrorCode IndMatInsertCreate(IndDisc disc, Mat J, IndMatInsert *insert);
 PetscErrorCode IndMatInsertDestroy(IndMatInsert *insert);
 /* Zeroes J and opens its arrays; then IndMatInsertCell for any cells; End closes and assembles. */
 PetscErrorCode IndMatInsertBegin(IndMatInsert insert, Mat J);
-PetscErrorCode IndMatInsertCell(IndMatInsert insert, Mat J, PetscInt cell, const PetscReal *Ke);
+PetscErrorCode IndMatInsertCell(IndMatInsert insert, PetscInt cell, const PetscReal *Ke);
 PetscErrorCode IndMatInsertEnd(IndMatInsert insert, Mat J);

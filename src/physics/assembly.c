@@ -192,7 +192,11 @@ PetscErrorCode IndAssemblyJacobian(IndAssembly a, Vec Uloc, Mat J)
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(IndLog.jacobian, 0, 0, 0, 0));
   if (ins) PetscCall(IndMatInsertBegin(ins, J));
-  else PetscCall(MatZeroEntries(J));
+  else {
+    /* a copy of the Jacobian (MatDuplicate keeps its options) sends rows of other ranks through the stash */
+    PetscCall(MatSetOption(J, MAT_NO_OFF_PROC_ENTRIES, PETSC_FALSE));
+    PetscCall(MatZeroEntries(J));
+  }
   PetscCall(VecGetArrayRead(Uloc, &u));
   PetscCall(VecGetArrayRead(a->Xloc, &xn));
   PetscCall(VecGetArrayRead(a->history->committed, &hold));
@@ -213,7 +217,7 @@ PetscErrorCode IndAssemblyJacobian(IndAssembly a, Vec Uloc, Mat J)
     else
       for (PetscInt r = 1; r < nd; ++r)
         for (PetscInt c = 0; c < r; ++c) a->Ke[r * nd + c] = a->Ke[c * nd + r];
-    if (ins) PetscCall(IndMatInsertCell(ins, J, i, a->Ke));
+    if (ins) PetscCall(IndMatInsertCell(ins, i, a->Ke));
     else PetscCall(MatSetValues(J, nd, g, nd, g, a->Ke, ADD_VALUES));
   }
   PetscCall(VecRestoreArrayRead(a->history->committed, &hold));

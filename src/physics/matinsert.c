@@ -1,20 +1,38 @@
+#include <petscsf.h>
 #include "ind_matinsert.h"
 
 /* MatSetValues searches every one of a cell's nd x nd columns in its row: on the paper case at h_tip 15
    that was 85% of the Jacobian, 2 us per P1 cell. The pattern never changes, so the search is done
    once: per cell and pair of nodes (a, b), where the 3 x 3 block starts within the rows of node a, in
    the diagonal or the off-diagonal part of the rank's AIJ matrix. The three rows of a node share
-   their pattern and a node's three columns are consecutive (checked when the cache is built). */
+   their pattern and a node's three columns are consecutive (checked when the cache is built).
+
+   A block of a row another rank owns went through MatSetValues' stash: on 2 ranks of the README's mesh the
+   assembly then spent 31 to 36 ms a Jacobian (a quarter of it) packing, sending and searching the same 180k
+   entries with their indices. Those blocks are now summed on this rank into one slot per distinct block, and
+   only the values travel, by a star forest built once whose roots are the owner's positions. */
+#define REMOTE_BASE ((PetscInt)1 << 28) /* pos <= -REMOTE_BASE: slot -pos - REMOTE_BASE of the blocks sent */
+
 struct _p_IndMatInsert {
   PetscInt        nb, ncell;
   const PetscInt *gidx;   /* the discretisation's global indices, ncell x 3 nb */
-  PetscInt       *pos;    /* ncell x nb x nb: position in the row + 1, negated in the off-diagonal part; 0: not owned */
+  PetscInt       *pos;    /* ncell x nb x nb: position in the row + 1, negated in the off-diagonal part; or a slot */
   PetscInt        rstart, rend;
   Mat             Ad, Ao; /* the rank's diagonal and off-diagonal parts (Ao NULL on one rank) */
   PetscScalar    *ad, *ao;
   const PetscInt *iad, *iao;
-  PetscInt        noff;   /* blocks of rows owned by other ranks, set with MatSetValues */
+  /* blocks of rows owned by other ranks: summed here (nsend slots of 9 values), received by their owner (nrecv) */
+  PetscSF         sf;
+  PetscInt        nsend, nrecv;
+  PetscScalar    *sendv, *recvv;
+  PetscInt       *recv_row, *recv_pos; /* local first row and position (as pos) of each received block */
 };
+
+/* The rank's pattern, to find blocks in. */
+typedef struct {
+  const PetscInt *iad, *jad, *iao, *jao, *garray;
+  PetscInt        nga, cstart, ncol;
+} Pattern;
 
 /* Position of column col within local row r of a SeqAIJ structure, or -1. */
 static PetscInt Find(const PetscInt *ia, const PetscInt *ja, PetscInt r, PetscInt col)
@@ -38,23 +56,151 @@ static PetscBool BlockFits(const PetscInt *ia, const PetscInt *ja, PetscInt r, P
   return PETSC_TRUE;
 }
 
+/* The block of local rows lr..lr+2 and global columns col..col+2, as a pos (p + 1 in the diagonal part, -(p + 1) in
+   the off-diagonal one); false if the pattern has no such whole block. */
+static PetscBool BlockPosition(const Pattern *pt, PetscInt lr, PetscInt col, PetscInt *pos)
+{
+  PetscInt p, lo = 0, hi = pt->nga - 1, jc = -1;
+
+  if (col >= pt->cstart && col < pt->cstart + pt->ncol) {
+    p    = Find(pt->iad, pt->jad, lr, col - pt->cstart);
+    *pos = p + 1;
+    return p >= 0 && p + 1 < REMOTE_BASE && BlockFits(pt->iad, pt->jad, lr, p, col - pt->cstart);
+  }
+  while (lo <= hi) { /* garray is sorted */
+    const PetscInt mid = (lo + hi) / 2;
+    if (pt->garray[mid] == col) {
+      jc = mid;
+      break;
+    }
+    if (pt->garray[mid] < col) lo = mid + 1;
+    else hi = mid - 1;
+  }
+  if (jc < 0 || jc + 2 >= pt->nga || pt->garray[jc + 2] != col + 2) return PETSC_FALSE;
+  p    = Find(pt->iao, pt->jao, lr, jc);
+  *pos = -(p + 1);
+  return p >= 0 && p + 1 < REMOTE_BASE && BlockFits(pt->iao, pt->jao, lr, p, jc);
+}
+
+static PetscBool AllRanks(MPI_Comm comm, PetscBool ok)
+{
+  PetscMPIInt all = ok ? 1 : 0;
+  if (MPI_Allreduce(MPI_IN_PLACE, &all, 1, MPI_INT, MPI_MIN, comm)) return PETSC_FALSE;
+  return all ? PETSC_TRUE : PETSC_FALSE;
+}
+
+/* The slots of the blocks of rows other ranks own (pos set to them), and the forest that carries their values to
+   the owners, each of which finds where they go in its pattern. */
+static PetscErrorCode BuildExchange(IndMatInsert m, Mat J, const Pattern *pt, PetscBool *ok)
+{
+  const PetscInt  nb = m->nb;
+  const PetscInt *ranges;
+  PetscInt        M, nkey = 0, nroot_multi, nleaf_multi, *cols, *rcols;
+  PetscInt64     *keys;
+  const PetscInt *degree, *mleaf;
+  PetscSFNode    *remote, *vremote;
+  const PetscSFNode *mremote;
+  PetscSF         rows, multi;
+  PetscMPIInt     size;
+  MPI_Comm        comm = PetscObjectComm((PetscObject)J);
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_size(comm, &size));
+  PetscCall(MatGetSize(J, &M, NULL));
+  PetscCall(MatGetOwnershipRanges(J, &ranges));
+  for (PetscInt k = 0; k < m->ncell * nb * nb; ++k) nkey += m->pos[k] == 0;
+  PetscCall(PetscMalloc1(nkey, &keys));
+  nkey = 0;
+  for (PetscInt i = 0; i < m->ncell; ++i)
+    for (PetscInt a = 0; a < nb; ++a)
+      for (PetscInt b = 0; b < nb; ++b)
+        if (m->pos[(i * nb + a) * nb + b] == 0)
+          keys[nkey++] = (PetscInt64)m->gidx[i * 3 * nb + 3 * a] * M + m->gidx[i * 3 * nb + 3 * b];
+  PetscCall(PetscSortInt64(nkey, keys));
+  m->nsend = 0;
+  for (PetscInt k = 0; k < nkey; ++k)
+    if (k == 0 || keys[k] != keys[m->nsend - 1]) keys[m->nsend++] = keys[k];
+  for (PetscInt i = 0; i < m->ncell; ++i)
+    for (PetscInt a = 0; a < nb; ++a)
+      for (PetscInt b = 0; b < nb; ++b) {
+        PetscInt *pos = m->pos + (i * nb + a) * nb + b, lo = 0, hi = m->nsend - 1;
+        const PetscInt64 key = (PetscInt64)m->gidx[i * 3 * nb + 3 * a] * M + m->gidx[i * 3 * nb + 3 * b];
+        if (*pos != 0) continue;
+        while (lo < hi) {
+          const PetscInt mid = (lo + hi) / 2;
+          if (keys[mid] < key) lo = mid + 1;
+          else hi = mid;
+        }
+        *pos = -(REMOTE_BASE + lo);
+      }
+  /* each slot a leaf of its first row on the owner; the owner gathers the slots' columns */
+  PetscCall(PetscMalloc2(m->nsend, &remote, m->nsend, &cols));
+  for (PetscInt k = 0; k < m->nsend; ++k) {
+    const PetscInt row = (PetscInt)(keys[k] / M);
+    PetscMPIInt    lo = 0, hi = size - 1;
+    while (lo < hi) { /* the last rank whose range starts at or before row */
+      const PetscMPIInt mid = (lo + hi + 1) / 2;
+      if (ranges[mid] <= row) lo = mid;
+      else hi = mid - 1;
+    }
+    remote[k].rank  = lo;
+    remote[k].index = row - ranges[lo];
+    cols[k]         = (PetscInt)(keys[k] % M);
+  }
+  PetscCall(PetscFree(keys));
+  PetscCall(PetscSFCreate(comm, &rows));
+  PetscCall(PetscSFSetGraph(rows, m->rend - m->rstart, m->nsend, NULL, PETSC_COPY_VALUES, remote, PETSC_COPY_VALUES));
+  PetscCall(PetscSFSetUp(rows));
+  PetscCall(PetscSFComputeDegreeBegin(rows, &degree));
+  PetscCall(PetscSFComputeDegreeEnd(rows, &degree));
+  m->nrecv = 0;
+  for (PetscInt r = 0; r < m->rend - m->rstart; ++r) m->nrecv += degree[r];
+  PetscCall(PetscMalloc1(m->nrecv, &rcols));
+  PetscCall(PetscMalloc2(m->nrecv, &m->recv_row, m->nrecv, &m->recv_pos));
+  PetscCall(PetscSFGatherBegin(rows, MPIU_INT, cols, rcols));
+  PetscCall(PetscSFGatherEnd(rows, MPIU_INT, cols, rcols));
+  *ok = PETSC_TRUE;
+  for (PetscInt r = 0, s = 0; r < m->rend - m->rstart; ++r)
+    for (PetscInt d = 0; d < degree[r]; ++d, ++s) {
+      m->recv_row[s] = r;
+      *ok = (PetscBool)(*ok && r % 3 == 0 && BlockPosition(pt, r, rcols[s], &m->recv_pos[s]));
+    }
+  /* the gather's own forest has a root for every (row, sender): the values' forest has 9 a block */
+  PetscCall(PetscSFGetMultiSF(rows, &multi));
+  PetscCall(PetscSFGetGraph(multi, &nroot_multi, &nleaf_multi, &mleaf, &mremote));
+  *ok = (PetscBool)(*ok && nroot_multi == m->nrecv && nleaf_multi == m->nsend);
+  for (PetscInt k = 0; mleaf && k < nleaf_multi; ++k) *ok = (PetscBool)(*ok && mleaf[k] == k);
+  nleaf_multi = *ok ? m->nsend : 0; /* its set-up is collective: an empty forest where the pattern did not fit */
+  PetscCall(PetscMalloc1(9 * nleaf_multi, &vremote));
+  for (PetscInt k = 0; k < nleaf_multi; ++k)
+    for (PetscInt j = 0; j < 9; ++j) {
+      vremote[9 * k + j].rank  = mremote[k].rank;
+      vremote[9 * k + j].index = 9 * mremote[k].index + j;
+    }
+  PetscCall(PetscSFCreate(comm, &m->sf));
+  PetscCall(PetscSFSetGraph(m->sf, 9 * m->nrecv, 9 * nleaf_multi, NULL, PETSC_OWN_POINTER, vremote, PETSC_OWN_POINTER));
+  PetscCall(PetscSFSetUp(m->sf));
+  PetscCall(PetscSFDestroy(&rows));
+  PetscCall(PetscFree(rcols));
+  PetscCall(PetscFree2(remote, cols));
+  PetscCall(PetscMalloc2(9 * m->nsend + 1, &m->sendv, 9 * m->nrecv + 1, &m->recvv));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode IndMatInsertCreate(IndDisc disc, Mat J, IndMatInsert *out)
 {
   IndMatInsert    m;
   PetscBool       seq, mpi, ok = PETSC_TRUE, done;
-  const PetscInt *garray = NULL, *iad, *jad, *iao = NULL, *jao = NULL;
-  PetscInt        nr, nro, nga = 0, cstart;
+  const PetscInt *jad, *jao = NULL;
+  PetscInt        nr, nro;
+  Pattern         pt = {0};
   MPI_Comm        comm = PetscObjectComm((PetscObject)J);
 
   PetscFunctionBeginUser;
   *out = NULL;
   PetscCall(PetscObjectBaseTypeCompare((PetscObject)J, MATSEQAIJ, &seq));
   PetscCall(PetscObjectBaseTypeCompare((PetscObject)J, MATMPIAIJ, &mpi));
-  {
-    PetscMPIInt any = (seq || mpi) ? 1 : 0;
-    PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &any, 1, MPI_INT, MPI_MIN, comm));
-    if (!any) PetscFunctionReturn(PETSC_SUCCESS); /* another matrix type (-jac_mat_type): MatSetValues */
-  }
+  if (!AllRanks(comm, (PetscBool)(seq || mpi))) PetscFunctionReturn(PETSC_SUCCESS); /* another type: MatSetValues */
   PetscCall(PetscCalloc1(1, &m));
   {
     const IndDiscLayout *L;
@@ -64,59 +210,39 @@ PetscErrorCode IndMatInsertCreate(IndDisc disc, Mat J, IndMatInsert *out)
     m->gidx  = L->gidx;
   }
   PetscCall(MatGetOwnershipRange(J, &m->rstart, &m->rend));
-  PetscCall(MatGetOwnershipRangeColumn(J, &cstart, NULL));
+  PetscCall(MatGetOwnershipRangeColumn(J, &pt.cstart, NULL));
   if (mpi) {
-    PetscCall(MatMPIAIJGetSeqAIJ(J, &m->Ad, &m->Ao, &garray));
-    PetscCall(MatGetLocalSize(m->Ao, NULL, &nga));
+    PetscCall(MatMPIAIJGetSeqAIJ(J, &m->Ad, &m->Ao, &pt.garray));
+    PetscCall(MatGetLocalSize(m->Ao, NULL, &pt.nga));
   } else m->Ad = J;
-  PetscCall(MatGetRowIJ(m->Ad, 0, PETSC_FALSE, PETSC_FALSE, &nr, &iad, &jad, &done));
+  PetscCall(MatGetRowIJ(m->Ad, 0, PETSC_FALSE, PETSC_FALSE, &nr, &pt.iad, &jad, &done));
   PetscCheck(done, PETSC_COMM_SELF, PETSC_ERR_SUP, "No row structure of the Jacobian");
-  if (m->Ao) PetscCall(MatGetRowIJ(m->Ao, 0, PETSC_FALSE, PETSC_FALSE, &nro, &iao, &jao, &done));
+  pt.jad  = jad;
+  pt.ncol = nr;
+  if (m->Ao) PetscCall(MatGetRowIJ(m->Ao, 0, PETSC_FALSE, PETSC_FALSE, &nro, &pt.iao, &jao, &done));
+  pt.jao = jao;
   PetscCall(PetscMalloc1(m->ncell * m->nb * m->nb, &m->pos));
   for (PetscInt i = 0; i < m->ncell && ok; ++i) {
     const PetscInt *g = m->gidx + i * 3 * m->nb;
     for (PetscInt a = 0; a < m->nb && ok; ++a) {
       const PetscInt row = g[3 * a];
       for (PetscInt b = 0; b < m->nb && ok; ++b) {
-        const PetscInt col = g[3 * b];
-        PetscInt      *pos = m->pos + (i * m->nb + a) * m->nb + b, p;
-        if (row < m->rstart || row >= m->rend) {
-          *pos = 0;
-          continue;
-        }
-        if (col >= cstart && col < cstart + nr) {
-          p  = Find(iad, jad, row - m->rstart, col - cstart);
-          ok = p >= 0 && BlockFits(iad, jad, row - m->rstart, p, col - cstart) ? PETSC_TRUE : PETSC_FALSE;
-          *pos = p + 1;
-        } else {
-          PetscInt lo = 0, hi = nga - 1, jc = -1;
-          while (lo <= hi) { /* garray is sorted */
-            const PetscInt mid = (lo + hi) / 2;
-            if (garray[mid] == col) {
-              jc = mid;
-              break;
-            }
-            if (garray[mid] < col) lo = mid + 1;
-            else hi = mid - 1;
-          }
-          ok = jc >= 0 && jc + 2 < nga && garray[jc + 2] == col + 2 ? PETSC_TRUE : PETSC_FALSE;
-          if (ok) {
-            p  = Find(iao, jao, row - m->rstart, jc);
-            ok = p >= 0 && BlockFits(iao, jao, row - m->rstart, p, jc) ? PETSC_TRUE : PETSC_FALSE;
-            *pos = -(p + 1);
-          }
-        }
+        PetscInt *pos = m->pos + (i * m->nb + a) * m->nb + b;
+        *pos          = 0; /* a row of another rank: a slot, below */
+        if (row >= m->rstart && row < m->rend) ok = BlockPosition(&pt, row - m->rstart, g[3 * b], pos);
       }
     }
   }
-  PetscCall(MatRestoreRowIJ(m->Ad, 0, PETSC_FALSE, PETSC_FALSE, &nr, &iad, &jad, &done));
-  if (m->Ao) PetscCall(MatRestoreRowIJ(m->Ao, 0, PETSC_FALSE, PETSC_FALSE, &nro, &iao, &jao, &done));
-  {
-    PetscMPIInt all = ok ? 1 : 0;
-    PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &all, 1, MPI_INT, MPI_MIN, comm));
-    ok = all ? PETSC_TRUE : PETSC_FALSE;
+  ok = AllRanks(comm, ok);
+  if (ok && mpi) {
+    PetscCall(BuildExchange(m, J, &pt, &ok));
+    ok = AllRanks(comm, ok);
   }
+  PetscCall(MatRestoreRowIJ(m->Ad, 0, PETSC_FALSE, PETSC_FALSE, &nr, &pt.iad, &jad, &done));
+  if (m->Ao) PetscCall(MatRestoreRowIJ(m->Ao, 0, PETSC_FALSE, PETSC_FALSE, &nro, &pt.iao, &jao, &done));
   if (!ok) PetscCall(IndMatInsertDestroy(&m)); /* a pattern not of node blocks: MatSetValues */
+  /* every value is now added in place or sent by the forest: none is stashed, so none is looked for */
+  if (ok && mpi) PetscCall(MatSetOption(J, MAT_NO_OFF_PROC_ENTRIES, PETSC_TRUE));
   *out = m;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -126,6 +252,9 @@ PetscErrorCode IndMatInsertDestroy(IndMatInsert *m)
   PetscFunctionBeginUser;
   if (!*m) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(PetscFree((*m)->pos));
+  PetscCall(PetscSFDestroy(&(*m)->sf));
+  PetscCall(PetscFree2((*m)->sendv, (*m)->recvv));
+  PetscCall(PetscFree2((*m)->recv_row, (*m)->recv_pos));
   PetscCall(PetscFree(*m));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -138,6 +267,7 @@ PetscErrorCode IndMatInsertBegin(IndMatInsert m, Mat J)
 
   PetscFunctionBeginUser;
   PetscCall(MatZeroEntries(J));
+  if (m->nsend) PetscCall(PetscArrayzero(m->sendv, 9 * m->nsend));
   PetscCall(MatSeqAIJGetArray(m->Ad, &m->ad));
   PetscCall(MatGetRowIJ(m->Ad, 0, PETSC_FALSE, PETSC_FALSE, &n, &m->iad, &ja, &done));
   if (m->Ao) {
@@ -147,7 +277,20 @@ PetscErrorCode IndMatInsertBegin(IndMatInsert m, Mat J)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode IndMatInsertCell(IndMatInsert m, Mat J, PetscInt i, const PetscReal *Ke)
+/* the 3 x 3 block b (row stride ld) added at local rows lr.. and position p of the open arrays */
+static inline void AddBlock(IndMatInsert m, PetscInt lr, PetscInt p, const PetscScalar *b, PetscInt ld)
+{
+  PetscScalar    *v  = p > 0 ? m->ad : m->ao;
+  const PetscInt *ia = p > 0 ? m->iad : m->iao, o = (p > 0 ? p : -p) - 1;
+  for (int k = 0; k < 3; ++k) {
+    PetscScalar *vr = v + ia[lr + k] + o;
+    vr[0] += b[k * ld + 0];
+    vr[1] += b[k * ld + 1];
+    vr[2] += b[k * ld + 2];
+  }
+}
+
+PetscErrorCode IndMatInsertCell(IndMatInsert m, PetscInt i, const PetscReal *Ke)
 {
   const PetscInt  nb = m->nb, nd = 3 * nb;
   const PetscInt *g  = m->gidx + i * nd, *pos = m->pos + i * nb * nb;
@@ -158,23 +301,13 @@ PetscErrorCode IndMatInsertCell(IndMatInsert m, Mat J, PetscInt i, const PetscRe
     for (PetscInt b = 0; b < nb; ++b) {
       const PetscInt   p  = pos[a * nb + b];
       const PetscReal *Kb = Ke + 3 * a * nd + 3 * b;
-      if (p == 0) { /* a row of another rank: stashed, sent at assembly */
-        PetscScalar B[9];
+      if (p <= -REMOTE_BASE) { /* a row of another rank: summed in its slot, sent at assembly */
+        PetscScalar *v = m->sendv + 9 * (-p - REMOTE_BASE);
         for (int k = 0; k < 3; ++k)
-          for (int j = 0; j < 3; ++j) B[3 * k + j] = Kb[k * nd + j];
-        PetscCall(MatSetValues(J, 3, g + 3 * a, 3, g + 3 * b, B, ADD_VALUES));
+          for (int j = 0; j < 3; ++j) v[3 * k + j] += Kb[k * nd + j];
         continue;
       }
-      {
-        PetscScalar    *v  = p > 0 ? m->ad : m->ao;
-        const PetscInt *ia = p > 0 ? m->iad : m->iao, o = (p > 0 ? p : -p) - 1;
-        for (int k = 0; k < 3; ++k) {
-          PetscScalar *vr = v + ia[lr + k] + o;
-          vr[0] += Kb[k * nd + 0];
-          vr[1] += Kb[k * nd + 1];
-          vr[2] += Kb[k * nd + 2];
-        }
-      }
+      AddBlock(m, lr, p, Kb, nd);
     }
   }
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -187,6 +320,11 @@ PetscErrorCode IndMatInsertEnd(IndMatInsert m, Mat J)
   const PetscInt *ja = NULL;
 
   PetscFunctionBeginUser;
+  if (m->sf) {
+    PetscCall(PetscSFReduceBegin(m->sf, MPIU_SCALAR, m->sendv, m->recvv, MPI_REPLACE));
+    PetscCall(PetscSFReduceEnd(m->sf, MPIU_SCALAR, m->sendv, m->recvv, MPI_REPLACE));
+    for (PetscInt s = 0; s < m->nrecv; ++s) AddBlock(m, m->recv_row[s], m->recv_pos[s], m->recvv + 9 * s, 3);
+  }
   PetscCall(MatRestoreRowIJ(m->Ad, 0, PETSC_FALSE, PETSC_FALSE, &n, &m->iad, &ja, &done));
   PetscCall(MatSeqAIJRestoreArray(m->Ad, &m->ad));
   if (m->Ao) {
