@@ -22,6 +22,8 @@ typedef struct _p_IndMaterials *IndMaterials;
 
 /* Whether any region is elasto-plastic (collective-free: every rank reads the same options). */
 PetscBool      IndMaterialsArePlastic(IndMaterials mats);
+/* Whether any elasto-plastic region hardens kinematically (its points carry a back stress). */
+PetscBool      IndMaterialsHaveBackStress(IndMaterials mats);
 /* Whether any region is densifying (its plastic strain has a trace). */
 PetscBool      IndMaterialsAreDensifying(IndMaterials mats);
 PetscErrorCode IndMaterialsCreate(IndMesh mesh, IndDisc disc, IndMaterials *mats);

@@ -76,7 +76,7 @@ static PetscErrorCode PointLoop(IndAssembly a, Vec Uloc, Vec Floc)
 {
   const IndDiscLayout *disc = a->layout;
   const PetscInt     nb = disc->nb, nq = disc->nq;
-  const PetscInt     stride = a->history->stride;
+  const PetscInt     stride = a->history->stride, nval = a->history->nval;
   const PetscScalar *u;
   PetscScalar       *f = NULL, *hist;
   const PetscScalar *hist_read, *xn;
@@ -99,20 +99,23 @@ static PetscErrorCode PointLoop(IndAssembly a, Vec Uloc, Vec Floc)
     PetscCall(PetscArrayzero(a->fe, disc->ndof));
     for (PetscInt q = 0; q < nq; ++q) {
       const PetscReal  w   = IndDiscGradients(disc, i, a->xe, q, a->G, a->hoop);
-      PetscReal       *h   = hist + i * stride + q * IND_HISTORY_NVAL;
+      PetscReal       *h   = hist + i * stride + q * nval;
       /* P: first Piola-Kirchhoff stress; at small strain the stress */
-      PetscReal        P[9], dp, old[IND_HISTORY_NVAL];
-      PetscReal       *trial = Floc ? NULL : h;
+      PetscReal        P[9], dp, old[IND_HISTORY_NVAL], upd[IND_HISTORY_NVAL];
       IndPlasticStatus status;
 
-      PetscCall(PetscArraycpy(old, h, IND_HISTORY_NVAL));
-      status = a->kin->stress(m, a->tangent, nb, a->G, a->khoop, a->ue, old, trial, P, &dp);
+      IndHistoryUnpack(nval, h, old);
+      PetscCall(PetscArraycpy(upd, old, IND_HISTORY_NVAL)); /* an elastic material's update writes none of it */
+      status = a->kin->stress(m, a->tangent, nb, a->G, a->khoop, a->ue, old, Floc ? NULL : upd, P, &dp);
       if (status != IND_PLASTIC_OK) {
         a->nfailed++;
         continue;
       }
       if (dp > 0) a->nplastic++;
-      if (!Floc) continue;
+      if (!Floc) {
+        IndHistoryPack(nval, upd, h);
+        continue;
+      }
       for (PetscInt b = 0; b < nb; ++b) {
         const PetscReal gx = a->G[3 * b], gy = a->G[3 * b + 1], gz = a->G[3 * b + 2];
         for (int r = 0; r < 3; ++r) a->fe[3 * b + r] += w * (gx * P[3 * r] + gy * P[3 * r + 1] + gz * P[3 * r + 2]);
@@ -183,6 +186,7 @@ PetscErrorCode IndAssemblyJacobian(IndAssembly a, Vec Uloc, Mat J)
 {
   const IndDiscLayout *disc = a->layout;
   const PetscInt     nb = disc->nb, nq = disc->nq, nd = disc->ndof, stride = a->history->stride;
+  const PetscInt     nval = a->history->nval;
   /* the last node's rows and columns follow from the others' (an eighth of a hexahedron's), but on an axisymmetric
      section; with one point a cell the completion costs more than it saves (a small-strain P1 cell: 154 to 198 ns) */
   const PetscInt     nt = a->khoop || nq == 1 ? nb : nb - 1;
@@ -208,7 +212,8 @@ PetscErrorCode IndAssemblyJacobian(IndAssembly a, Vec Uloc, Mat J)
     PetscCall(PetscArrayzero(a->Ke, nd * nd));
     for (PetscInt q = 0; q < nq; ++q) {
       const PetscReal  w   = IndDiscGradients(disc, i, a->xe, q, a->G, a->hoop);
-      const PetscReal *old = hold + i * stride + q * IND_HISTORY_NVAL;
+      PetscReal        old[IND_HISTORY_NVAL];
+      IndHistoryUnpack(nval, hold + i * stride + q * nval, old);
       /* A failed point was already reported by the residual at this displacement, which stops the
          Newton iteration before any Jacobian; its NaN tangent cannot go unnoticed either. */
       (void)a->kin->stiffness(m, a->tangent, nb, nt, a->G, a->khoop, a->ue, old, w, a->B, a->DB, a->Ke);
@@ -306,7 +311,7 @@ PetscErrorCode IndAssemblyCreateMatrix(IndAssembly a, Mat *J)
 PetscErrorCode IndAssemblyCellAverages(IndAssembly a, Vec Uloc, IndCellFields *out)
 {
   const IndDiscLayout *disc = a->layout;
-  const PetscInt     nq = disc->nq, stride = a->history->stride;
+  const PetscInt     nq = disc->nq, stride = a->history->stride, nval = a->history->nval;
   const PetscScalar *u, *xn, *hist;
 
   PetscFunctionBeginUser;
@@ -318,10 +323,11 @@ PetscErrorCode IndAssemblyCellAverages(IndAssembly a, Vec Uloc, IndCellFields *o
     PetscReal          vol = 0, vol0 = 0, savg[6] = {0}, eavg[6] = {0}, pavg = 0, xavg = 0, yavg = 0, cavg = 0;
     GatherCell(a, i, u, xn);
     for (PetscInt q = 0; q < nq; ++q) {
-      const PetscReal *h = hist + i * stride + q * IND_HISTORY_NVAL;
+      PetscReal              h[IND_HISTORY_NVAL];
       const IndPlasticState *st = (const IndPlasticState *)h;
       const PetscReal  w0 = IndDiscGradients(disc, i, a->xe, q, a->G, a->hoop);
       PetscReal        eps[6], s[6], w = w0;
+      IndHistoryUnpack(nval, hist + i * stride + q * nval, h);
       a->kin->fields(m, disc->nb, a->G, a->khoop, a->ue, h, s, eps, &w);
       /* stress and strain over the current volume (w: at finite strain w0 J); the material's own
          state (p, back stress, yielding) over the material, i.e. the reference volume */

@@ -163,6 +163,13 @@ PetscBool IndMaterialsArePlastic(IndMaterials mats)
   return PETSC_FALSE;
 }
 
+PetscBool IndMaterialsHaveBackStress(IndMaterials mats)
+{
+  for (PetscInt k = 0; k < mats->n; ++k)
+    if (mats->mat[k].model != IND_MODEL_ELASTIC && mats->mat[k].plastic.H > 0) return PETSC_TRUE;
+  return PETSC_FALSE;
+}
+
 PetscBool IndMaterialsAreDensifying(IndMaterials mats)
 {
   for (PetscInt k = 0; k < mats->n; ++k)

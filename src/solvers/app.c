@@ -115,7 +115,7 @@ PetscErrorCode IndAppCreate(MPI_Comm comm, IndApp *out)
   }
   if (app->contact && !IndHelpListing()) PetscCall(IndScratchSetUp(&app->scratch, app->contact, app->bc));
   if (app->scratch.length > 0) IndLoadPathSetScratch(&app->path, app->scratch.steps);
-  PetscCall(IndHistoryCreate(app->disc, &app->history));
+  PetscCall(IndHistoryCreate(app->disc, IndMaterialsHaveBackStress(app->mats), &app->history));
   PetscCall(IndAssemblyCreate(app->disc, app->mats, app->history, &app->assembly));
   if (app->contact) PetscCall(IndContactSetCurrentAreas(app->contact, IndAssemblyIsFiniteStrain(app->assembly)));
   {
