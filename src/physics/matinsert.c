@@ -1,3 +1,4 @@
+#include <stdint.h>
 #include <petscsf.h>
 #include "ind_matinsert.h"
 
@@ -11,12 +12,16 @@
    assembly then spent 31 to 36 ms a Jacobian (a quarter of it) packing, sending and searching the same 180k
    entries with their indices. Those blocks are now summed on this rank into one slot per distinct block, and
    only the values travel, by a star forest built once whose roots are the owner's positions. */
-#define REMOTE_BASE ((PetscInt)1 << 28) /* pos <= -REMOTE_BASE: slot -pos - REMOTE_BASE of the blocks sent */
+/* A block's position fits 16 bits (a row of a Q2 hexahedron's mesh has at most 375 columns): the positions of the
+   plastic cube at 824k dofs take 34 MB, not 67. REMOTE marks a block of another rank's rows, whose slot comes next
+   in the cell's list of them. */
+#define REMOTE INT16_MIN
 
 struct _p_IndMatInsert {
   PetscInt        nb, ncell;
   const PetscInt *gidx;   /* the discretisation's global indices, ncell x 3 nb */
-  PetscInt       *pos;    /* ncell x nb x nb: position in the row + 1, negated in the off-diagonal part; or a slot */
+  int16_t        *pos;    /* ncell x nb x nb: position in the row + 1, negated in the off-diagonal part; or REMOTE */
+  PetscInt       *roff, *rslot; /* cell i's REMOTE blocks' slots: rslot[roff[i]..roff[i + 1]) in the cell's order */
   PetscInt        rstart, rend;
   Mat             Ad, Ao; /* the rank's diagonal and off-diagonal parts (Ao NULL on one rank) */
   PetscScalar    *ad, *ao;
@@ -65,7 +70,7 @@ static PetscBool BlockPosition(const Pattern *pt, PetscInt lr, PetscInt col, Pet
   if (col >= pt->cstart && col < pt->cstart + pt->ncol) {
     p    = Find(pt->iad, pt->jad, lr, col - pt->cstart);
     *pos = p + 1;
-    return p >= 0 && p + 1 < REMOTE_BASE && BlockFits(pt->iad, pt->jad, lr, p, col - pt->cstart);
+    return p >= 0 && p + 1 <= INT16_MAX && BlockFits(pt->iad, pt->jad, lr, p, col - pt->cstart);
   }
   while (lo <= hi) { /* garray is sorted */
     const PetscInt mid = (lo + hi) / 2;
@@ -79,7 +84,7 @@ static PetscBool BlockPosition(const Pattern *pt, PetscInt lr, PetscInt col, Pet
   if (jc < 0 || jc + 2 >= pt->nga || pt->garray[jc + 2] != col + 2) return PETSC_FALSE;
   p    = Find(pt->iao, pt->jao, lr, jc);
   *pos = -(p + 1);
-  return p >= 0 && p + 1 < REMOTE_BASE && BlockFits(pt->iao, pt->jao, lr, p, jc);
+  return p >= 0 && p + 1 <= INT16_MAX && BlockFits(pt->iao, pt->jao, lr, p, jc);
 }
 
 static PetscBool AllRanks(MPI_Comm comm, PetscBool ok)
@@ -108,31 +113,35 @@ static PetscErrorCode BuildExchange(IndMatInsert m, Mat J, const Pattern *pt, Pe
   PetscCallMPI(MPI_Comm_size(comm, &size));
   PetscCall(MatGetSize(J, &M, NULL));
   PetscCall(MatGetOwnershipRanges(J, &ranges));
-  for (PetscInt k = 0; k < m->ncell * nb * nb; ++k) nkey += m->pos[k] == 0;
+  for (PetscInt k = 0; k < m->ncell * nb * nb; ++k) nkey += m->pos[k] == REMOTE;
   PetscCall(PetscMalloc1(nkey, &keys));
   nkey = 0;
   for (PetscInt i = 0; i < m->ncell; ++i)
     for (PetscInt a = 0; a < nb; ++a)
       for (PetscInt b = 0; b < nb; ++b)
-        if (m->pos[(i * nb + a) * nb + b] == 0)
+        if (m->pos[(i * nb + a) * nb + b] == REMOTE)
           keys[nkey++] = (PetscInt64)m->gidx[i * 3 * nb + 3 * a] * M + m->gidx[i * 3 * nb + 3 * b];
   PetscCall(PetscSortInt64(nkey, keys));
   m->nsend = 0;
   for (PetscInt k = 0; k < nkey; ++k)
     if (k == 0 || keys[k] != keys[m->nsend - 1]) keys[m->nsend++] = keys[k];
-  for (PetscInt i = 0; i < m->ncell; ++i)
+  PetscCall(PetscMalloc2(m->ncell + 1, &m->roff, nkey, &m->rslot));
+  m->roff[0] = 0;
+  for (PetscInt i = 0, k = 0; i < m->ncell; ++i) {
     for (PetscInt a = 0; a < nb; ++a)
       for (PetscInt b = 0; b < nb; ++b) {
-        PetscInt *pos = m->pos + (i * nb + a) * nb + b, lo = 0, hi = m->nsend - 1;
         const PetscInt64 key = (PetscInt64)m->gidx[i * 3 * nb + 3 * a] * M + m->gidx[i * 3 * nb + 3 * b];
-        if (*pos != 0) continue;
+        PetscInt         lo = 0, hi = m->nsend - 1;
+        if (m->pos[(i * nb + a) * nb + b] != REMOTE) continue;
         while (lo < hi) {
           const PetscInt mid = (lo + hi) / 2;
           if (keys[mid] < key) lo = mid + 1;
           else hi = mid;
         }
-        *pos = -(REMOTE_BASE + lo);
+        m->rslot[k++] = lo;
       }
+    m->roff[i + 1] = k;
+  }
   /* each slot a leaf of its first row on the owner; the owner gathers the slots' columns */
   PetscCall(PetscMalloc2(m->nsend, &remote, m->nsend, &cols));
   for (PetscInt k = 0; k < m->nsend; ++k) {
@@ -227,9 +236,9 @@ PetscErrorCode IndMatInsertCreate(IndDisc disc, Mat J, IndMatInsert *out)
     for (PetscInt a = 0; a < m->nb && ok; ++a) {
       const PetscInt row = g[3 * a];
       for (PetscInt b = 0; b < m->nb && ok; ++b) {
-        PetscInt *pos = m->pos + (i * m->nb + a) * m->nb + b;
-        *pos          = 0; /* a row of another rank: a slot, below */
-        if (row >= m->rstart && row < m->rend) ok = BlockPosition(&pt, row - m->rstart, g[3 * b], pos);
+        PetscInt p = REMOTE; /* a row of another rank: a slot, below */
+        if (row >= m->rstart && row < m->rend) ok = BlockPosition(&pt, row - m->rstart, g[3 * b], &p);
+        m->pos[(i * m->nb + a) * m->nb + b] = (int16_t)p;
       }
     }
   }
@@ -252,6 +261,7 @@ PetscErrorCode IndMatInsertDestroy(IndMatInsert *m)
   PetscFunctionBeginUser;
   if (!*m) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(PetscFree((*m)->pos));
+  PetscCall(PetscFree2((*m)->roff, (*m)->rslot));
   PetscCall(PetscSFDestroy(&(*m)->sf));
   PetscCall(PetscFree2((*m)->sendv, (*m)->recvv));
   PetscCall(PetscFree2((*m)->recv_row, (*m)->recv_pos));
@@ -293,7 +303,8 @@ static inline void AddBlock(IndMatInsert m, PetscInt lr, PetscInt p, const Petsc
 PetscErrorCode IndMatInsertCell(IndMatInsert m, PetscInt i, const PetscReal *Ke)
 {
   const PetscInt  nb = m->nb, nd = 3 * nb;
-  const PetscInt *g  = m->gidx + i * nd, *pos = m->pos + i * nb * nb;
+  const PetscInt *g  = m->gidx + i * nd, *slot = m->roff ? m->rslot + m->roff[i] : NULL;
+  const int16_t  *pos = m->pos + i * nb * nb;
 
   PetscFunctionBeginUser;
   for (PetscInt a = 0; a < nb; ++a) {
@@ -301,8 +312,8 @@ PetscErrorCode IndMatInsertCell(IndMatInsert m, PetscInt i, const PetscReal *Ke)
     for (PetscInt b = 0; b < nb; ++b) {
       const PetscInt   p  = pos[a * nb + b];
       const PetscReal *Kb = Ke + 3 * a * nd + 3 * b;
-      if (p <= -REMOTE_BASE) { /* a row of another rank: summed in its slot, sent at assembly */
-        PetscScalar *v = m->sendv + 9 * (-p - REMOTE_BASE);
+      if (p == REMOTE) { /* a row of another rank: summed in its slot, sent at assembly */
+        PetscScalar *v = m->sendv + 9 * *slot++;
         for (int k = 0; k < 3; ++k)
           for (int j = 0; j < 3; ++j) v[3 * k + j] += Kb[k * nd + j];
         continue;
