@@ -11,10 +11,11 @@
    A block of a row another rank owns went through MatSetValues' stash: on 2 ranks of the README's mesh the
    assembly then spent 31 to 36 ms a Jacobian (a quarter of it) packing, sending and searching the same 180k
    entries with their indices. Those blocks are now summed on this rank into one slot per distinct block, and
-   only the values travel, by a star forest built once whose roots are the owner's positions. */
-/* A block's position fits 16 bits (a row of a Q2 hexahedron's mesh has at most 375 columns): the positions of the
-   plastic cube at 824k dofs take 34 MB, not 67. REMOTE marks a block of another rank's rows, whose slot comes next
-   in the cell's list of them. */
+   only the values travel, by a star forest built once whose roots are the owner's positions.
+
+   A block's position fits 16 bits (a row of a Q2 hexahedron's mesh has at most 375 columns; a longer row makes
+   the cache give way to MatSetValues): the positions of the plastic cube at 824k dofs take 34 MB, not 67. REMOTE
+   marks a block of another rank's rows, whose slot comes next in the cell's list of them. */
 #define REMOTE INT16_MIN
 
 struct _p_IndMatInsert {
@@ -94,7 +95,7 @@ static PetscBool AllRanks(MPI_Comm comm, PetscBool ok)
   return all ? PETSC_TRUE : PETSC_FALSE;
 }
 
-/* The slots of the blocks of rows other ranks own (pos set to them), and the forest that carries their values to
+/* The slots of the blocks of rows other ranks own (listed per cell), and the forest that carries their values to
    the owners, each of which finds where they go in its pattern. */
 static PetscErrorCode BuildExchange(IndMatInsert m, Mat J, const Pattern *pt, PetscBool *ok)
 {
