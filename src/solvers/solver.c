@@ -150,6 +150,53 @@ static PetscErrorCode MultigridAsJacobian(KSP ksp, void *ctx)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The six rigid-body modes of the mesh's nodes, GAMG's near null space. Our own node positions:
+   DMPlexCreateRigidBody projects through a path that took 8.4 s of a 12.4 s setup at 64k cells in PETSc 3.18. */
+static PetscErrorCode CreateRigidBodyModes(IndSolver s, MatNullSpace *rigid)
+{
+  Vec      nodes, blocked;
+  PetscInt n;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(IndLog.near_null, 0, 0, 0, 0));
+  PetscCall(IndDiscNodeCoordinates(IndAssemblyGetDisc(s->assembly), &nodes));
+  PetscCall(VecGetLocalSize(nodes, &n));
+  PetscCall(VecCreateMPI(PetscObjectComm((PetscObject)s->dm), n, PETSC_DETERMINE, &blocked));
+  PetscCall(VecSetBlockSize(blocked, 3));
+  PetscCall(VecCopy(nodes, blocked));
+  PetscCall(MatNullSpaceCreateRigidBody(blocked, rigid));
+  PetscCall(VecDestroy(&blocked));
+  PetscCall(VecDestroy(&nodes));
+  PetscCall(PetscLogEventEnd(IndLog.near_null, 0, 0, 0, 0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode AttachRigidBodyModes(IndSolver s)
+{
+  MatNullSpace rigid;
+
+  PetscFunctionBeginUser;
+  PetscCall(MatGetNearNullSpace(s->J, &rigid));
+  if (rigid) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(CreateRigidBodyModes(s, &rigid));
+  PetscCall(MatSetNearNullSpace(s->J, rigid));
+  PetscCall(MatNullSpaceDestroy(&rigid));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* A multigrid built afresh: GAMG builds its interpolation from the rigid-body modes at its first set-up (and after
+   a reset), and reuses it at every later one; until a reset the six vectors are not needed (37 MB of the plastic
+   cube's 2.52 GB at 824k dofs), unless the user had the interpolation rebuilt (-pc_gamg_reuse_interpolation 0). */
+static PetscErrorCode FreshMultigrid(KSP ksp, void *ctx)
+{
+  IndSolver s = (IndSolver)ctx;
+
+  PetscFunctionBeginUser;
+  if (!IndAssemblyJacobianInodes(s->assembly)) PetscCall(MultigridAsJacobian(ksp, s));
+  if (!s->keep_rigid) PetscCall(MatSetNearNullSpace(s->J, NULL));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscErrorCode FormJacobian(SNES snes, Vec U, Mat A, Mat P, void *ctx)
 {
   IndSolver s = (IndSolver)ctx;
@@ -245,7 +292,6 @@ PetscErrorCode IndSolverCreate(DM dm, IndAssembly assembly, IndBC bc, IndContact
   IndSolver    s;
   KSP          ksp;
   PC           pc;
-  MatNullSpace rigid;
   PetscBool    single = PETSC_TRUE, galerkin = PETSC_TRUE;
 
   PetscFunctionBeginUser;
@@ -260,24 +306,7 @@ PetscErrorCode IndSolverCreate(DM dm, IndAssembly assembly, IndBC bc, IndContact
   PetscCall(PetscLogEventBegin(IndLog.preallocate, 0, 0, 0, 0));
   PetscCall(IndAssemblyCreateMatrix(assembly, &s->J));
   PetscCall(PetscLogEventEnd(IndLog.preallocate, 0, 0, 0, 0));
-  PetscCall(PetscLogEventBegin(IndLog.near_null, 0, 0, 0, 0));
-  {
-    /* Our own node positions: DMPlexCreateRigidBody projects through a path that took 8.4 s of a
-       12.4 s setup at 64k cells in PETSc 3.18. */
-    Vec      nodes, blocked;
-    PetscInt n;
-    PetscCall(IndDiscNodeCoordinates(IndAssemblyGetDisc(assembly), &nodes));
-    PetscCall(VecGetLocalSize(nodes, &n));
-    PetscCall(VecCreateMPI(PetscObjectComm((PetscObject)dm), n, PETSC_DETERMINE, &blocked));
-    PetscCall(VecSetBlockSize(blocked, 3));
-    PetscCall(VecCopy(nodes, blocked));
-    PetscCall(MatNullSpaceCreateRigidBody(blocked, &rigid));
-    PetscCall(MatSetNearNullSpace(s->J, rigid));
-    PetscCall(MatNullSpaceDestroy(&rigid));
-    PetscCall(VecDestroy(&blocked));
-    PetscCall(VecDestroy(&nodes));
-  }
-  PetscCall(PetscLogEventEnd(IndLog.near_null, 0, 0, 0, 0));
+  PetscCall(AttachRigidBodyModes(s));
 
   PetscCall(SNESCreate(PetscObjectComm((PetscObject)dm), &s->snes));
   PetscCall(SNESSetFunction(s->snes, NULL, FormResidual, s));
@@ -341,10 +370,14 @@ PetscErrorCode IndSolverCreate(DM dm, IndAssembly assembly, IndBC bc, IndContact
        (src/solvers/pcreuse.h), unless the user chose SNES's fixed lag. */
     PetscBool   lag;
     const char *prefix;
+    PetscBool   reuse = PETSC_TRUE;
     PetscCall(SNESGetOptionsPrefix(s->snes, &prefix));
     PetscCall(PetscOptionsHasName(NULL, prefix, "-snes_lag_preconditioner", &lag));
     PetscCall(IndPCReuseCreate(ksp, (PetscBool)!lag, &s->reuse));
-    if (!IndAssemblyJacobianInodes(assembly)) PetscCall(IndPCReuseSetFreshHook(s->reuse, MultigridAsJacobian, s));
+    PetscCall(KSPGetOptionsPrefix(ksp, &prefix));
+    PetscCall(PetscOptionsGetBool(NULL, prefix, "-pc_gamg_reuse_interpolation", &reuse, NULL));
+    s->keep_rigid = (PetscBool)!reuse;
+    PetscCall(IndPCReuseSetFreshHook(s->reuse, FreshMultigrid, s));
   }
   if (contact) {
     /* rho from the stiffness of the undeformed body, before any condition touches its diagonal */
@@ -596,8 +629,10 @@ PetscErrorCode IndSolverElasticStiffness(IndSolver s, Vec U, Mat *K)
 
   PetscFunctionBeginUser;
   PetscCall(MatDuplicate(s->J, MAT_DO_NOT_COPY_VALUES, K));
-  PetscCall(MatGetNearNullSpace(s->J, &nsp));
-  if (nsp) PetscCall(MatSetNearNullSpace(*K, nsp));
+  /* its own: J's are let go once the multigrid has its interpolation */
+  PetscCall(CreateRigidBodyModes(s, &nsp));
+  PetscCall(MatSetNearNullSpace(*K, nsp));
+  PetscCall(MatNullSpaceDestroy(&nsp));
   PetscCall(DMGlobalToLocal(s->dm, U, INSERT_VALUES, s->Uloc));
   PetscCall(IndAssemblyElasticJacobian(s->assembly, s->Uloc, *K));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -617,6 +652,7 @@ PetscErrorCode IndSolverState(void *obj, IndStateFile f)
   if (!IndStateReading(f)) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(SNESGetKSP(s->snes, &ksp));
   PetscCall(KSPReset(ksp));
-  PetscCall(IndPCReuseReset(s->reuse));
+  PetscCall(IndPCReuseReset(s->reuse)); /* the next set-up builds the interpolation anew, from the rigid-body modes */
+  PetscCall(AttachRigidBodyModes(s));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -22,4 +22,5 @@ struct _p_IndSolver {
   PetscBool    stalled;     /* the last Newton solve was stopped by the stall test */
   IndBordered  border;      /* load control (NULL: depth control) */
   IndPCReuse   reuse;       /* when the multigrid is rebuilt */
+  PetscBool    keep_rigid;  /* J keeps its rigid-body modes after the multigrid's first set-up (it rebuilds P) */
 };
