@@ -1,6 +1,7 @@
-static const char help[] = "The Jacobian's rigid-body modes (GAMG's near null space) are held while the multigrid builds\n"
-                           "its interpolation: let go after its first set-up, given back when a restored state resets\n"
-                           "it, and kept throughout when the interpolation is rebuilt (-pc_gamg_reuse_interpolation 0).\n";
+static const char help[] = "The Jacobian's rigid-body modes (GAMG's near null space) are held while the\n"
+                           "multigrid builds its interpolation: let go after its first set-up, given back when a\n"
+                           "restored state resets it, and kept throughout when the interpolation is rebuilt\n"
+                           "(-pc_gamg_reuse_interpolation 0).\n";
 
 #include "ind_app.h"
 #include "ind_solver.h"
@@ -45,19 +46,15 @@ int main(int argc, char **argv)
 {
   IndApp    app;
   PetscInt  failures = 0, after;
-  PetscBool rebuilt  = PETSC_FALSE;
+  PetscBool reuse = PETSC_TRUE; /* GAMG's interpolation reused (the default): the modes let go after a set-up */
   char      path[PETSC_MAX_PATH_LEN] = "";
 
   PetscFunctionBeginUser;
   PetscCall(PetscInitialize(&argc, &argv, NULL, help));
   PetscCall(PetscOptionsGetString(NULL, NULL, "-rigid_checkpoint", path, sizeof(path), NULL));
   PetscCheck(path[0], PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-rigid_checkpoint <file> is required");
-  {
-    PetscBool reuse = PETSC_TRUE;
-    PetscCall(PetscOptionsGetBool(NULL, NULL, "-pc_gamg_reuse_interpolation", &reuse, NULL));
-    rebuilt = (PetscBool)!reuse;
-  }
-  after = rebuilt ? 6 : 0;
+  PetscCall(PetscOptionsGetBool(NULL, NULL, "-pc_gamg_reuse_interpolation", &reuse, NULL));
+  after = reuse ? 0 : 6;
   PetscCall(IndAppCreate(PETSC_COMM_WORLD, &app));
   PetscCall(Expect(app, 6, "before the first solve", &failures));
   PetscCall(Step(app));

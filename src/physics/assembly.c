@@ -105,7 +105,7 @@ static PetscErrorCode PointLoop(IndAssembly a, Vec Uloc, Vec Floc)
       IndPlasticStatus status;
 
       IndHistoryUnpack(nval, h, old);
-      PetscCall(PetscArraycpy(upd, old, IND_HISTORY_NVAL)); /* an elastic material's update writes none of it */
+      if (!Floc) PetscCall(PetscArraycpy(upd, old, IND_HISTORY_NVAL)); /* an elastic material's update writes none */
       status = a->kin->stress(m, a->tangent, nb, a->G, a->khoop, a->ue, old, Floc ? NULL : upd, P, &dp);
       if (status != IND_PLASTIC_OK) {
         a->nfailed++;
