@@ -98,10 +98,15 @@ def main():
         """64 KiB zeroed in the middle of the cells' keys (centroids, none zero: a change whatever the case;
         the middle of the file may hold history values that are zero already)."""
         with h5py.File(p, "r") as f:
-            info = f["cells/keys"].id.get_chunk_info(0)
+            keys = f["cells/keys"].id
+            if keys.get_create_plist().get_layout() == h5py.h5d.CHUNKED:  # written by PETSc's VecView
+                info = keys.get_chunk_info(0)
+                offset, size = info.byte_offset, info.size
+            else:
+                offset, size = keys.get_offset(), keys.get_storage_size()
         with open(p, "r+b") as f:
-            f.seek(info.byte_offset + max(0, info.size // 2 - 32768))
-            f.write(bytes(min(65536, info.size)))
+            f.seek(offset + max(0, size // 2 - 32768))
+            f.write(bytes(min(65536, size)))
 
     def truncate(p):
         os.truncate(p, os.path.getsize(p) // 2)

@@ -7,28 +7,53 @@
 #include "ind_elasticity.h"
 #include "ind_version.h"
 #include "xdmf.h"
+#include "ind_h5rows.h"
 
-/* A clone of the mesh with dof unknowns on every point of one stratum (depth 0: vertices, height 0: cells). */
-static PetscErrorCode CreateStratumDM(DM dm, PetscBool cells, PetscInt dof, DM *out)
+/* A clone of the mesh with 3 values on each vertex, its section charted over the vertices alone: a section over
+   every mesh point (faces and edges too) costs about 20 bytes a point once more for each layout. */
+static PetscErrorCode CreateVertexDM(DM dm, DM *out)
 {
   PetscSection s;
-  PetscInt     pStart, pEnd, sStart, sEnd;
+  PetscInt     vStart, vEnd;
 
   PetscFunctionBeginUser;
   PetscCall(DMClone(dm, out));
-  PetscCall(DMPlexGetChart(dm, &pStart, &pEnd));
-  if (cells) PetscCall(DMPlexGetHeightStratum(dm, 0, &sStart, &sEnd));
-  else PetscCall(DMPlexGetDepthStratum(dm, 0, &sStart, &sEnd));
+  PetscCall(DMPlexGetDepthStratum(dm, 0, &vStart, &vEnd));
   PetscCall(PetscSectionCreate(PetscObjectComm((PetscObject)dm), &s));
-  PetscCall(PetscSectionSetChart(s, pStart, pEnd));
-  for (PetscInt p = sStart; p < sEnd; ++p) PetscCall(PetscSectionSetDof(s, p, dof));
+  PetscCall(PetscSectionSetChart(s, vStart, vEnd));
+  for (PetscInt p = vStart; p < vEnd; ++p) PetscCall(PetscSectionSetDof(s, p, 3));
   PetscCall(PetscSectionSetUp(s));
   PetscCall(DMSetLocalSection(*out, s));
   PetscCall(PetscSectionDestroy(&s));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Copies 3 values per vertex from a vector laid out by section src into the vertex layout. */
+/* A field vector without a mesh: n rows of bs values on this rank. DMPlex's own view of a mesh's vector would
+   build a local copy, its numberings and a cell layout at the first write (about 200 bytes a cell) to write the
+   same rows. */
+static PetscErrorCode CreateRowsVec(MPI_Comm comm, PetscInt n, PetscInt bs, const char name[], Vec *v)
+{
+  PetscFunctionBeginUser;
+  PetscCall(VecCreateMPI(comm, n * bs, PETSC_DETERMINE, v));
+  PetscCall(VecSetBlockSize(*v, bs));
+  if (name) PetscCall(PetscObjectSetName((PetscObject)*v, name));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The vertices this rank owns in the vertex layout (the rows of its share of a vertex field). */
+static PetscErrorCode OwnedVertices(IndOutput o, PetscInt *n)
+{
+  PetscSection gs;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMGetGlobalSection(o->vdm, &gs));
+  PetscCall(PetscSectionGetConstrainedStorageSize(gs, n));
+  *n /= 3;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Copies 3 values per vertex from a vector laid out by section src into the vertex layout (global: a vector of
+   the owned vertices' rows, in the layout's order). */
 static PetscErrorCode GatherVertexValues(IndOutput o, PetscSection src, const PetscScalar *in, Vec global)
 {
   PetscSection vs;
@@ -50,8 +75,8 @@ static PetscErrorCode GatherVertexValues(IndOutput o, PetscSection src, const Pe
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Cell-to-vertex connectivity in global vertex numbers and VTK/XDMF vertex order. */
-static PetscErrorCode CreateTopology(IndOutput o, IS *topo)
+/* Cell-to-vertex connectivity of the local cells in global vertex numbers and VTK/XDMF vertex order (PetscFree). */
+static PetscErrorCode CreateTopology(IndOutput o, PetscInt **topo)
 {
   DM           dm = o->vdm;
   PetscSection gs;
@@ -81,9 +106,7 @@ static PetscErrorCode CreateTopology(IndOutput o, IS *topo)
       "Cell %" PetscInt_FMT " has %" PetscInt_FMT " vertices", c, nv);
     for (PetscInt k = 0; k < nv; ++k) conn[n++] = verts[perm[k]];
   }
-  PetscCall(ISCreateGeneral(PetscObjectComm((PetscObject)dm), n, conn, PETSC_OWN_POINTER, topo));
-  PetscCall(ISSetBlockSize(*topo, o->corners));
-  PetscCall(PetscObjectSetName((PetscObject)*topo, "cells"));
+  *topo = conn;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -116,10 +139,10 @@ static PetscErrorCode OpenFile(IndOutput o)
 {
   MPI_Comm     comm = PetscObjectComm((PetscObject)o->dm);
   DM           cdm;
-  Vec          X, coords, plain;
+  Vec          X, coords;
   PetscSection cs;
   const PetscScalar *x;
-  IS           topo;
+  PetscInt    *topo;
   PetscInt     n;
 
   PetscFunctionBeginUser;
@@ -134,31 +157,28 @@ static PetscErrorCode OpenFile(IndOutput o)
   PetscCall(DMGetCoordinateDM(o->dm, &cdm));
   PetscCall(DMGetLocalSection(cdm, &cs));
   PetscCall(DMGetCoordinatesLocal(o->dm, &X));
-  PetscCall(DMCreateGlobalVector(o->vdm, &coords));
+  PetscCall(OwnedVertices(o, &n));
+  PetscCall(CreateRowsVec(comm, n, 3, "vertices", &coords));
   PetscCall(VecGetArrayRead(X, &x));
   PetscCall(GatherVertexValues(o, cs, x, coords));
   PetscCall(VecRestoreArrayRead(X, &x));
   PetscCall(VecGetSize(coords, &n));
   o->nvert = n / 3;
-  /* A vector without a DM: DMPlex vectors always land in /fields. */
-  PetscCall(VecGetLocalSize(coords, &n));
-  PetscCall(VecCreateMPI(comm, n, PETSC_DETERMINE, &plain));
-  PetscCall(VecSetBlockSize(plain, 3));
-  PetscCall(VecCopy(coords, plain));
-  PetscCall(PetscObjectSetName((PetscObject)plain, "vertices"));
   PetscCall(PetscViewerHDF5PushGroup(o->viewer, "/geometry"));
-  PetscCall(VecView(plain, o->viewer));
+  PetscCall(VecGetLocalSize(coords, &n));
+  PetscCall(VecGetArrayRead(coords, &x));
+  PetscCall(IndH5WriteRows(o->viewer, "vertices", n / 3, 3, x));
+  PetscCall(VecRestoreArrayRead(coords, &x));
   PetscCall(PetscViewerHDF5PopGroup(o->viewer));
-  PetscCall(VecDestroy(&plain));
   PetscCall(VecDestroy(&coords));
 
   PetscCall(CreateTopology(o, &topo));
-  PetscCall(ISGetSize(topo, &n));
-  o->ncell = n / o->corners;
+  n = o->layout->ncell;
+  PetscCallMPI(MPI_Allreduce(&n, &o->ncell, 1, MPIU_INT, MPI_SUM, comm));
   PetscCall(PetscViewerHDF5PushGroup(o->viewer, "/topology"));
-  PetscCall(ISView(topo, o->viewer));
+  PetscCall(IndH5WriteIntRows(o->viewer, "cells", n, o->corners, topo));
   PetscCall(PetscViewerHDF5PopGroup(o->viewer));
-  PetscCall(ISDestroy(&topo));
+  PetscCall(PetscFree(topo));
   PetscCall(IndOutputWriteCellKeys(o));
   PetscCall(PetscViewerHDF5PushTimestepping(o->viewer));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -237,53 +257,34 @@ PetscErrorCode IndOutputSetStepInfo(IndOutput o, PetscInt step, PetscReal t, Pet
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* The layouts and vectors of the fields, made at the first write: a run without field output never holds
-   them, and one with it not during its first solve, where the memory peaks (on a box of 824k dofs they
-   are about 10 doubles per dof, and a section per layout over every mesh point). */
+/* The vertex layout and the fields' vectors, made at the first write: a run without field output never holds
+   them, and one with it not during its first solve, where the memory peaks. */
 static PetscErrorCode CreateFieldObjects(IndOutput o)
 {
-  MPI_Comm    comm = PetscObjectComm((PetscObject)o->dm);
-  PetscMPIInt rank;
+  MPI_Comm comm = PetscObjectComm((PetscObject)o->dm);
+  PetscInt nv, nc = o->layout->ncell;
 
   PetscFunctionBeginUser;
   if (o->vdm) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCall(CreateStratumDM(o->dm, PETSC_FALSE, 3, &o->vdm));
-  PetscCall(CreateStratumDM(o->dm, PETSC_TRUE, 6, &o->c6dm));
-  PetscCall(CreateStratumDM(o->dm, PETSC_TRUE, 1, &o->c1dm));
+  PetscCall(CreateVertexDM(o->dm, &o->vdm));
+  PetscCall(OwnedVertices(o, &nv));
   PetscCall(DMCreateLocalVector(o->dm, &o->Uloc));
   PetscCall(DMCreateLocalVector(o->vdm, &o->vloc));
-  PetscCall(DMCreateGlobalVector(o->vdm, &o->disp));
-  PetscCall(DMCreateGlobalVector(o->c6dm, &o->stress));
-  PetscCall(DMCreateGlobalVector(o->c6dm, &o->strain));
-  PetscCall(DMCreateGlobalVector(o->c1dm, &o->vonmises));
-  PetscCall(DMCreateGlobalVector(o->c1dm, &o->plastic));
-  PetscCall(DMCreateGlobalVector(o->c1dm, &o->back));
-  PetscCall(DMCreateGlobalVector(o->c1dm, &o->yielding));
-  PetscCall(PetscObjectSetName((PetscObject)o->disp, "displacement"));
-  PetscCall(PetscObjectSetName((PetscObject)o->stress, "stress"));
-  PetscCall(PetscObjectSetName((PetscObject)o->strain, "strain"));
-  PetscCall(PetscObjectSetName((PetscObject)o->vonmises, "von_mises"));
-  PetscCall(PetscObjectSetName((PetscObject)o->plastic, "plastic_strain"));
-  PetscCall(PetscObjectSetName((PetscObject)o->back, "back_stress"));
-  PetscCall(PetscObjectSetName((PetscObject)o->yielding, "yielding"));
-  if (o->densifying) {
-    PetscCall(DMCreateGlobalVector(o->c1dm, &o->compaction));
-    PetscCall(PetscObjectSetName((PetscObject)o->compaction, "compaction"));
-  }
-  PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  PetscCall(VecCreateMPI(comm, rank ? 0 : 1, 1, &o->stepnum));
-  PetscCall(PetscObjectSetName((PetscObject)o->stepnum, "step"));
+  /* cells are not shared (no overlap): local cell i is row i of this rank's share of a cell field */
+  PetscCall(CreateRowsVec(comm, nv, 3, "displacement", &o->disp));
+  PetscCall(CreateRowsVec(comm, nc, 6, "stress", &o->stress));
+  PetscCall(CreateRowsVec(comm, nc, 6, "strain", &o->strain));
+  PetscCall(CreateRowsVec(comm, nc, 1, "von_mises", &o->vonmises));
+  PetscCall(CreateRowsVec(comm, nc, 1, "plastic_strain", &o->plastic));
+  PetscCall(CreateRowsVec(comm, nc, 1, "back_stress", &o->back));
+  PetscCall(CreateRowsVec(comm, nc, 1, "yielding", &o->yielding));
+  if (o->densifying) PetscCall(CreateRowsVec(comm, nc, 1, "compaction", &o->compaction));
   if (o->contact) {
-    DM v1dm;
     PetscCall(DMCreateGlobalVector(o->dm, &o->Gc));
     PetscCall(DMCreateLocalVector(o->dm, &o->Cloc));
-    PetscCall(DMCreateGlobalVector(o->vdm, &o->c3));
-    PetscCall(CreateStratumDM(o->dm, PETSC_FALSE, 1, &v1dm));
-    PetscCall(DMCreateGlobalVector(v1dm, &o->pressure));
-    PetscCall(DMCreateGlobalVector(v1dm, &o->status));
-    PetscCall(DMDestroy(&v1dm));
-    PetscCall(PetscObjectSetName((PetscObject)o->pressure, "contact_pressure"));
-    PetscCall(PetscObjectSetName((PetscObject)o->status, "contact_status"));
+    PetscCall(CreateRowsVec(comm, nv, 3, NULL, &o->c3));
+    PetscCall(CreateRowsVec(comm, nv, 1, "contact_pressure", &o->pressure));
+    PetscCall(CreateRowsVec(comm, nv, 1, "contact_status", &o->status));
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -507,13 +508,10 @@ PetscErrorCode IndOutputWriteStep(IndOutput o, PetscReal time, Vec U, IndAssembl
      step is written: readers match fields to the curve's rows by it. */
   {
     const PetscReal step = o->info[IND_OUTPUT_INFO * o->nsteps];
-    PetscScalar    *a;
-    PetscInt        n;
-    PetscCall(VecGetLocalSize(o->stepnum, &n));
-    PetscCall(VecGetArray(o->stepnum, &a));
-    if (n) a[0] = o->info_set && !PetscIsNanReal(step) ? step : -1.0;
-    PetscCall(VecRestoreArray(o->stepnum, &a));
-    PetscCall(VecView(o->stepnum, o->viewer));
+    const PetscReal value = o->info_set && !PetscIsNanReal(step) ? step : -1.0;
+    PetscMPIInt     rank;
+    PetscCallMPI(MPI_Comm_rank(PetscObjectComm((PetscObject)o->dm), &rank));
+    PetscCall(IndH5WriteRows(o->viewer, "step", rank ? 0 : 1, 1, &value)); /* one value, on rank 0 */
   }
   PetscCall(PetscViewerHDF5PopGroup(o->viewer));
   PetscCall(PetscViewerFlush(o->viewer));
@@ -562,15 +560,12 @@ PetscErrorCode IndOutputDestroy(IndOutput *o)
   PetscCall(VecDestroy(&(*o)->back));
   PetscCall(VecDestroy(&(*o)->yielding));
   PetscCall(VecDestroy(&(*o)->compaction));
-  PetscCall(VecDestroy(&(*o)->stepnum));
   PetscCall(VecDestroy(&(*o)->Gc));
   PetscCall(VecDestroy(&(*o)->Cloc));
   PetscCall(VecDestroy(&(*o)->c3));
   PetscCall(VecDestroy(&(*o)->pressure));
   PetscCall(VecDestroy(&(*o)->status));
   PetscCall(DMDestroy(&(*o)->vdm));
-  PetscCall(DMDestroy(&(*o)->c6dm));
-  PetscCall(DMDestroy(&(*o)->c1dm));
   PetscCall(PetscFree((*o)->times));
   PetscCall(PetscFree((*o)->info));
   PetscCall(PetscFree(*o));

@@ -18,15 +18,14 @@ struct _p_IndOutput {
   char        dir[PETSC_MAX_PATH_LEN];
   char        h5name[PETSC_MAX_PATH_LEN];
   PetscViewer viewer;
-  DM          vdm, c6dm, c1dm; /* vertex (3 dof), cell (6 dof) and cell (1 dof) layouts */
+  DM          vdm; /* the vertex layout (3 values a vertex); the fields are vectors of rows, without a DM */
   Vec           Uloc, vloc, disp, stress, strain, vonmises, plastic, back, yielding;
   PetscBool     densifying; /* a region is densifying: the cells' compaction is written too */
   Vec           compaction;
-  Vec           stepnum; /* one value, on rank 0: the accepted step of the output step (/fields/step) */
   IndCellFields cells; /* per local cell, filled by the assembly */
   IndContact    contact;                      /* NULL without an indenter */
   Vec           Gc, Cloc, c3, pressure, status; /* contact fields: disc layout (global, local),
-    vertex 3-dof and 1-dof */
+    vertex rows of 3 and of 1 */
   PetscInt    nsteps;
   PetscReal  *times;    /* per output step: XDMF time value, the pseudo-time t given to IndOutputSetStepInfo */
   PetscReal  *info;     /* per output step: IND_OUTPUT_INFO values, NaN where not known */
@@ -44,7 +43,8 @@ void           IndOutputCurveLine(FILE *fp, const IndCurvePoint *p);
 PetscErrorCode IndOutputWriteCellKeys(IndOutput out);
 /* Opens indent.h5 of the earlier part for appending and locates this run's vertices and cells in it. */
 PetscErrorCode IndOutputOpenResumed(IndOutput out);
-/* VecView of a vertex (cells false) or cell field, in the file's order when the file was resumed. */
+/* Writes a vertex (cells false) or cell field (the vector's name and block size) as the current step of its
+   dataset, in the file's order when the file was resumed. */
 PetscErrorCode IndOutputViewField(IndOutput out, Vec x, PetscBool cells);
 PetscErrorCode IndOutputPermDestroy(IndOutput out);
 

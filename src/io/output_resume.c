@@ -2,6 +2,7 @@
 #include "output_impl.h"
 #include "ind_keyedio.h"
 #include "ind_rundir.h"
+#include "ind_h5rows.h"
 
 #define MAXBS 6
 
@@ -145,36 +146,38 @@ PetscErrorCode IndOutputViewField(IndOutput o, Vec x, PetscBool cells)
 {
   struct _n_IndOutputPerm *pm = o->perm;
   const int                k  = cells ? 1 : 0;
+  Vec                      y  = x; /* the rows in the file's order */
+  const PetscScalar       *a;
+  const char              *name;
   PetscInt                 nloc, bs;
 
   PetscFunctionBeginUser;
-  if (!pm) {
-    PetscCall(VecView(x, o->viewer));
-    PetscFunctionReturn(PETSC_SUCCESS);
-  }
   PetscCall(VecGetLocalSize(x, &nloc));
-  bs = pm->n[k] ? nloc / pm->n[k] : 0;
-  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &bs, 1, MPIU_INT, MPI_MAX, PetscObjectComm((PetscObject)x)));
-  PetscCheck(bs >= 1 && bs <= MAXBS, PETSC_COMM_SELF, PETSC_ERR_PLIB, "Field of %" PetscInt_FMT " values per point",
-    bs);
-  if (!pm->sc[k][bs]) {
-    IS is;
-    PetscCall(VecCreate(PetscObjectComm((PetscObject)x), &pm->out[k][bs]));
-    PetscCall(VecSetBlockSize(pm->out[k][bs], bs));
-    PetscCall(VecSetSizes(pm->out[k][bs], PETSC_DECIDE, bs * pm->N[k]));
-    PetscCall(VecSetType(pm->out[k][bs], VECMPI));
-    PetscCall(ISCreateBlock(PetscObjectComm((PetscObject)x), bs, pm->n[k], pm->index[k], PETSC_COPY_VALUES, &is));
-    PetscCall(VecScatterCreate(x, NULL, pm->out[k][bs], is, &pm->sc[k][bs]));
-    PetscCall(ISDestroy(&is));
+  PetscCall(VecGetBlockSize(x, &bs));
+  if (pm) {
+    bs = pm->n[k] ? nloc / pm->n[k] : 0;
+    PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &bs, 1, MPIU_INT, MPI_MAX, PetscObjectComm((PetscObject)x)));
+    PetscCheck(bs >= 1 && bs <= MAXBS, PETSC_COMM_SELF, PETSC_ERR_PLIB, "Field of %" PetscInt_FMT " values per point",
+      bs);
+    if (!pm->sc[k][bs]) {
+      IS is;
+      PetscCall(VecCreate(PetscObjectComm((PetscObject)x), &pm->out[k][bs]));
+      PetscCall(VecSetBlockSize(pm->out[k][bs], bs));
+      PetscCall(VecSetSizes(pm->out[k][bs], PETSC_DECIDE, bs * pm->N[k]));
+      PetscCall(VecSetType(pm->out[k][bs], VECMPI));
+      PetscCall(ISCreateBlock(PetscObjectComm((PetscObject)x), bs, pm->n[k], pm->index[k], PETSC_COPY_VALUES, &is));
+      PetscCall(VecScatterCreate(x, NULL, pm->out[k][bs], is, &pm->sc[k][bs]));
+      PetscCall(ISDestroy(&is));
+    }
+    y = pm->out[k][bs];
+    PetscCall(VecScatterBegin(pm->sc[k][bs], x, y, INSERT_VALUES, SCATTER_FORWARD));
+    PetscCall(VecScatterEnd(pm->sc[k][bs], x, y, INSERT_VALUES, SCATTER_FORWARD));
+    PetscCall(VecGetLocalSize(y, &nloc));
   }
-  {
-    const char *name;
-    PetscCall(PetscObjectGetName((PetscObject)x, &name));
-    PetscCall(PetscObjectSetName((PetscObject)pm->out[k][bs], name));
-  }
-  PetscCall(VecScatterBegin(pm->sc[k][bs], x, pm->out[k][bs], INSERT_VALUES, SCATTER_FORWARD));
-  PetscCall(VecScatterEnd(pm->sc[k][bs], x, pm->out[k][bs], INSERT_VALUES, SCATTER_FORWARD));
-  PetscCall(VecView(pm->out[k][bs], o->viewer));
+  PetscCall(PetscObjectGetName((PetscObject)x, &name));
+  PetscCall(VecGetArrayRead(y, &a));
+  PetscCall(IndH5WriteRows(o->viewer, name, nloc / bs, bs, a));
+  PetscCall(VecRestoreArrayRead(y, &a));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -2,16 +2,11 @@
 #include <stdio.h>
 #include <string.h>
 #include "xdmf.h"
+#include "ind_h5rows.h"
 
 #if !H5_VERSION_GE(1, 10, 0)
   #error "indent's XDMF index needs HDF5 >= 1.10 (virtual datasets)"
 #endif
-
-/* HDF5 reports failure as a negative id or status. */
-#define IndCallHDF5(expr) \
-  do { \
-    if ((expr) < 0) SETERRQ(PETSC_COMM_SELF, PETSC_ERR_LIB, "HDF5 call failed: %s", #expr); \
-  } while (0)
 
 /* One virtual dataset: the whole of it is the slab [k, :, :] of the source. */
 static PetscErrorCode AddView(hid_t file, hid_t group, PetscInt k, const IndXdmfField *f)
