@@ -257,16 +257,15 @@ PetscErrorCode IndOutputSetStepInfo(IndOutput o, PetscInt step, PetscReal t, Pet
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* The vertex layout and the fields' vectors, made at the first write: a run without field output never holds
-   them, and one with it not during its first solve, where the memory peaks. */
+/* The vertex layout, made at the first write, and the fields' vectors, made for each write and destroyed after it:
+   a run without field output never holds them, and one with it not during its solves, where the memory peaks. */
 static PetscErrorCode CreateFieldObjects(IndOutput o)
 {
   MPI_Comm comm = PetscObjectComm((PetscObject)o->dm);
   PetscInt nv, nc = o->layout->ncell;
 
   PetscFunctionBeginUser;
-  if (o->vdm) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCall(CreateVertexDM(o->dm, &o->vdm));
+  if (!o->vdm) PetscCall(CreateVertexDM(o->dm, &o->vdm));
   PetscCall(OwnedVertices(o, &nv));
   PetscCall(DMCreateLocalVector(o->dm, &o->Uloc));
   PetscCall(DMCreateLocalVector(o->vdm, &o->vloc));
@@ -286,6 +285,16 @@ static PetscErrorCode CreateFieldObjects(IndOutput o)
     PetscCall(CreateRowsVec(comm, nv, 1, "contact_pressure", &o->pressure));
     PetscCall(CreateRowsVec(comm, nv, 1, "contact_status", &o->status));
   }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode DestroyFieldVectors(IndOutput o)
+{
+  Vec *v[] = {&o->Uloc, &o->vloc, &o->disp, &o->stress, &o->strain, &o->vonmises, &o->plastic, &o->back, &o->yielding,
+              &o->compaction, &o->Gc, &o->Cloc, &o->c3, &o->pressure, &o->status};
+
+  PetscFunctionBeginUser;
+  for (size_t k = 0; k < sizeof(v) / sizeof(v[0]); ++k) PetscCall(VecDestroy(v[k]));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -516,6 +525,7 @@ PetscErrorCode IndOutputWriteStep(IndOutput o, PetscReal time, Vec U, IndAssembl
   PetscCall(PetscViewerHDF5PopGroup(o->viewer));
   PetscCall(PetscViewerFlush(o->viewer));
   PetscCall(WriteXdmf(o, time));
+  PetscCall(DestroyFieldVectors(o));
   PetscCall(PetscLogEventEnd(IndLog.output_write, 0, 0, 0, 0));
   PetscCall(PetscLogStagePop());
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -550,21 +560,7 @@ PetscErrorCode IndOutputDestroy(IndOutput *o)
   if ((*o)->viewer) PetscCall(PetscViewerHDF5PopTimestepping((*o)->viewer));
   PetscCall(PetscViewerDestroy(&(*o)->viewer));
   PetscCall(IndOutputPermDestroy(*o));
-  PetscCall(VecDestroy(&(*o)->Uloc));
-  PetscCall(VecDestroy(&(*o)->vloc));
-  PetscCall(VecDestroy(&(*o)->disp));
-  PetscCall(VecDestroy(&(*o)->stress));
-  PetscCall(VecDestroy(&(*o)->strain));
-  PetscCall(VecDestroy(&(*o)->vonmises));
-  PetscCall(VecDestroy(&(*o)->plastic));
-  PetscCall(VecDestroy(&(*o)->back));
-  PetscCall(VecDestroy(&(*o)->yielding));
-  PetscCall(VecDestroy(&(*o)->compaction));
-  PetscCall(VecDestroy(&(*o)->Gc));
-  PetscCall(VecDestroy(&(*o)->Cloc));
-  PetscCall(VecDestroy(&(*o)->c3));
-  PetscCall(VecDestroy(&(*o)->pressure));
-  PetscCall(VecDestroy(&(*o)->status));
+  PetscCall(DestroyFieldVectors(*o));
   PetscCall(DMDestroy(&(*o)->vdm));
   PetscCall(PetscFree((*o)->times));
   PetscCall(PetscFree((*o)->info));
