@@ -38,12 +38,8 @@ static PetscErrorCode WriteRows(PetscViewer v, const char name[], PetscInt n, Pe
   htri_t    exists;
 
   PetscFunctionBeginUser;
-  PetscCallMPI(MPI_Exscan(&n, &below, 1, MPIU_INT, MPI_SUM, comm));
-  {
-    PetscMPIInt rank;
-    PetscCallMPI(MPI_Comm_rank(comm, &rank));
-    if (!rank) below = 0; /* MPI_Exscan leaves rank 0's result undefined */
-  }
+  PetscCallMPI(MPI_Scan(&n, &below, 1, MPIU_INT, MPI_SUM, comm));
+  below -= n;
   PetscCallMPI(MPI_Allreduce(&n, &N, 1, MPIU_INT, MPI_SUM, comm));
   PetscCall(PetscViewerHDF5IsTimestepping(v, &timestepping));
   if (timestepping) PetscCall(PetscViewerHDF5GetTimestep(v, &step));

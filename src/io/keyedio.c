@@ -72,12 +72,8 @@ PetscErrorCode IndRowsWrite(PetscViewer v, const char name[], PetscInt n, PetscI
 
   PetscFunctionBeginUser;
   PetscCall(IndH5WriteRows(v, name, n, bs, rows));
-  PetscCallMPI(MPI_Exscan(&values, &below, 1, MPIU_INT, MPI_SUM, comm));
-  {
-    PetscMPIInt rank;
-    PetscCallMPI(MPI_Comm_rank(comm, &rank));
-    if (!rank) below = 0;
-  }
+  PetscCallMPI(MPI_Scan(&values, &below, 1, MPIU_INT, MPI_SUM, comm));
+  below -= values;
   PetscCall(ChecksumValues(comm, values, below, (const PetscScalar *)rows, sum));
   PetscCall(PetscViewerHDF5WriteAttribute(v, name, "checksum", PETSC_STRING, sum));
   PetscFunctionReturn(PETSC_SUCCESS);
