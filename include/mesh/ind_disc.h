@@ -41,6 +41,19 @@ PetscErrorCode IndDiscQuadraturePoints(IndDisc disc, PetscReal **xq);
 /* Global vector of the position of every displacement node (for the rigid-body modes). */
 PetscErrorCode IndDiscNodeCoordinates(IndDisc disc, Vec *coords);
 
+/* The dofs of mesh point p in the displacement's section s: 0 outside its chart, which spans only the points that
+   carry dofs (a closure's faces and edges lie outside it on a P1 mesh). */
+static inline PetscErrorCode IndDiscPointDof(PetscSection s, PetscInt p, PetscInt *dof)
+{
+  PetscInt pStart, pEnd;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscSectionGetChart(s, &pStart, &pEnd));
+  *dof = 0;
+  if (p >= pStart && p < pEnd) PetscCall(PetscSectionGetDof(s, p, dof));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* The positions (nb x 3) of the nodes of local cell i, from xn, the array of Xloc. */
 static inline void IndDiscCellNodes(const IndDiscLayout *disc, PetscInt i, const PetscScalar *xn, PetscReal *xc)
 {

@@ -35,7 +35,7 @@ static PetscErrorCode FaceAreas(DM dm, PetscSection s, PetscInt face, const Pets
   for (PetscInt j = 0; j < ncl; ++j) {
     const PetscInt p = closure[2 * j];
     PetscInt       dof, o;
-    PetscCall(PetscSectionGetDof(s, p, &dof));
+    PetscCall(IndDiscPointDof(s, p, &dof));
     if (dof < 3) continue;
     PetscCall(PetscSectionGetOffset(s, p, &o));
     if (p >= vStart && p < vEnd) {
@@ -202,7 +202,7 @@ static PetscErrorCode SurfaceNodes(IndMesh mesh, IndDisc disc, const char surfac
       PetscCall(DMPlexGetTransitiveClosure(dm, f[i], PETSC_TRUE, &ncl, &closure));
       for (PetscInt j = 0; j < ncl; ++j) {
         PetscInt dof, o;
-        PetscCall(PetscSectionGetDof(s, closure[2 * j], &dof));
+        PetscCall(IndDiscPointDof(s, closure[2 * j], &dof));
         if (dof < 3) continue;
         PetscCall(PetscSectionGetOffset(s, closure[2 * j], &o));
         a[o] += 1.0;

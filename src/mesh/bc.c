@@ -260,7 +260,8 @@ PetscErrorCode IndBCSetUp(IndBC bc)
         PetscCall(DMPlexGetTransitiveClosure(dm, f[i], PETSC_TRUE, &ncl, &closure));
         for (PetscInt j = 0; j < ncl; ++j) {
           PetscInt dof, off;
-          PetscCall(PetscSectionGetDof(s, closure[2 * j], &dof));
+          PetscCall(IndDiscPointDof(s, closure[2 * j], &dof));
+          if (!dof) continue;
           PetscCall(PetscSectionGetOffset(s, closure[2 * j], &off));
           for (PetscInt d = 0; d < dof; ++d) {
             const PetscInt c = d % 3;
