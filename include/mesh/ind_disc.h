@@ -21,8 +21,9 @@ typedef struct {
   const PetscReal *dN;    /* nq x nb x 3 reference gradients (the third 0 on 2D cells) */
   PetscInt         ncell; /* local cells, numbered cStart + i */
   PetscInt         cStart;
-  const PetscInt  *lidx;  /* ncell x ndof local-vector indices, closure order */
-  const PetscInt  *gidx;  /* ncell x ndof global indices (the same dofs) */
+  const PetscInt  *lnode; /* ncell x nb local node numbers, closure order: node n's dofs are 3 n, 3 n + 1, 3 n + 2 in
+                             a local vector (in a global one for gnode) */
+  const PetscInt  *gnode; /* ncell x nb global node numbers (the same nodes) */
   const PetscReal *wdetJ; /* ncell x nq: weight times det J, and */
   const PetscReal *invJ;  /* ncell x nq x 9: invJ[k*3+j] = d xi_k / d x_j, kept only for cells whose coordinate map
                              the displacement basis cannot hold (second-order cells under P1/Q1); NULL otherwise */
@@ -57,8 +58,17 @@ static inline PetscErrorCode IndDiscPointDof(PetscSection s, PetscInt p, PetscIn
 /* The positions (nb x 3) of the nodes of local cell i, from xn, the array of Xloc. */
 static inline void IndDiscCellNodes(const IndDiscLayout *disc, PetscInt i, const PetscScalar *xn, PetscReal *xc)
 {
-  const PetscInt *idx = disc->lidx + i * disc->ndof;
-  for (PetscInt k = 0; k < disc->ndof; ++k) xc[k] = PetscRealPart(xn[idx[k]]);
+  const PetscInt *node = disc->lnode + i * disc->nb;
+  for (PetscInt a = 0; a < disc->nb; ++a)
+    for (int c = 0; c < 3; ++c) xc[3 * a + c] = PetscRealPart(xn[3 * node[a] + c]);
+}
+
+/* The dofs (3 nb) of local cell i, in a global vector's numbering if global, else in a local vector's. */
+static inline void IndDiscCellDofs(const IndDiscLayout *disc, PetscInt i, PetscBool global, PetscInt *dofs)
+{
+  const PetscInt *node = (global ? disc->gnode : disc->lnode) + i * disc->nb;
+  for (PetscInt a = 0; a < disc->nb; ++a)
+    for (int c = 0; c < 3; ++c) dofs[3 * a + c] = 3 * node[a] + c;
 }
 
 /* The Jacobian J (row-major, J[3 d + k] = d x_d / d xi_k) of the map from the reference cell, from the node

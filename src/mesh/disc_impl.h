@@ -17,8 +17,8 @@ struct _p_IndDisc {
   PetscReal       *dN;    /* nq x nb x 3 reference gradients (the third 0 on 2D cells) */
   PetscInt         ncell; /* local cells, numbered cStart + i */
   PetscInt         cStart;
-  PetscInt        *lidx;  /* ncell x ndof local-vector indices, closure order */
-  PetscInt        *gidx;  /* ncell x ndof global indices (the same dofs) */
+  PetscInt        *lnode; /* ncell x nb local node numbers, closure order: node n's dofs are 3 n, 3 n + 1, 3 n + 2 */
+  PetscInt        *gnode; /* ncell x nb global node numbers (the same nodes) */
   PetscReal       *wdetJ; /* ncell x nq: weight times det J, and */
   PetscReal       *invJ;  /* ncell x nq x 9: invJ[k*3+j] = d xi_k / d x_j, kept only for cells whose coordinate map
                              the displacement basis cannot hold (second-order cells under P1/Q1); NULL otherwise */

@@ -93,7 +93,7 @@ static PetscErrorCode PointLoop(IndAssembly a, Vec Uloc, Vec Floc)
   } else PetscCall(VecGetArray(a->history->committed, &hist));
   for (PetscInt i = 0; i < disc->ncell; ++i) {
     const IndMaterial *m   = &a->mats->mat[a->mats->cell_material[i]];
-    const PetscInt    *idx = disc->lidx + i * disc->ndof;
+    const PetscInt    *node = disc->lnode + i * nb;
 
     GatherCell(a, i, u, xn);
     PetscCall(PetscArrayzero(a->fe, disc->ndof));
@@ -129,7 +129,8 @@ static PetscErrorCode PointLoop(IndAssembly a, Vec Uloc, Vec Floc)
       }
     }
     if (Floc)
-      for (PetscInt k = 0; k < disc->ndof; ++k) f[idx[k]] += a->fe[k];
+      for (PetscInt b = 0; b < nb; ++b)
+        for (int c = 0; c < 3; ++c) f[3 * node[b] + c] += a->fe[3 * b + c];
   }
   if (Floc) PetscCall(VecRestoreArrayRead(a->history->committed, &hist_read));
   else PetscCall(VecRestoreArray(a->history->committed, &hist));
@@ -192,11 +193,13 @@ PetscErrorCode IndAssemblyJacobian(IndAssembly a, Vec Uloc, Mat J)
   const PetscInt     nt = a->khoop || nq == 1 ? nb : nb - 1;
   const PetscScalar *u, *xn, *hold;
   IndMatInsert       ins = J == a->J ? a->insert : NULL; /* cached positions are the matrix's own */
+  PetscInt          *g   = NULL;                           /* a cell's global dofs, for MatSetValues */
 
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(IndLog.jacobian, 0, 0, 0, 0));
   if (ins) PetscCall(IndMatInsertBegin(ins, J));
   else {
+    PetscCall(PetscMalloc1(nd, &g));
     /* a copy of the Jacobian (MatDuplicate keeps its options) sends rows of other ranks through the stash */
     PetscCall(MatSetOption(J, MAT_NO_OFF_PROC_ENTRIES, PETSC_FALSE));
     PetscCall(MatZeroEntries(J));
@@ -206,7 +209,6 @@ PetscErrorCode IndAssemblyJacobian(IndAssembly a, Vec Uloc, Mat J)
   PetscCall(VecGetArrayRead(a->history->committed, &hold));
   for (PetscInt i = 0; i < disc->ncell; ++i) {
     const IndMaterial *m = &a->mats->mat[a->mats->cell_material[i]];
-    const PetscInt    *g = disc->gidx + i * nd;
 
     GatherCell(a, i, u, xn);
     PetscCall(PetscArrayzero(a->Ke, nd * nd));
@@ -223,8 +225,12 @@ PetscErrorCode IndAssemblyJacobian(IndAssembly a, Vec Uloc, Mat J)
       for (PetscInt r = 1; r < nd; ++r)
         for (PetscInt c = 0; c < r; ++c) a->Ke[r * nd + c] = a->Ke[c * nd + r];
     if (ins) PetscCall(IndMatInsertCell(ins, i, a->Ke));
-    else PetscCall(MatSetValues(J, nd, g, nd, g, a->Ke, ADD_VALUES));
+    else {
+      IndDiscCellDofs(disc, i, PETSC_TRUE, g);
+      PetscCall(MatSetValues(J, nd, g, nd, g, a->Ke, ADD_VALUES));
+    }
   }
+  PetscCall(PetscFree(g));
   PetscCall(VecRestoreArrayRead(a->history->committed, &hold));
   PetscCall(VecRestoreArrayRead(a->Xloc, &xn));
   PetscCall(VecRestoreArrayRead(Uloc, &u));
@@ -261,16 +267,19 @@ PetscErrorCode IndAssemblyCreateMatrix(IndAssembly a, Mat *J)
     /* another type (-jac_mat_type): a dry run of the cell loop */
     Mat          P;
     PetscScalar *zeros;
+    PetscInt    *g;
     PetscCall(MatCreate(comm, &P));
     PetscCall(MatSetType(P, MATPREALLOCATOR));
     PetscCall(MatSetSizes(P, nlocal, nlocal, PETSC_DETERMINE, PETSC_DETERMINE));
     PetscCall(MatSetBlockSize(P, 3));
     PetscCall(MatSetUp(P));
     PetscCall(PetscCalloc1(disc->ndof * disc->ndof, &zeros));
+    PetscCall(PetscMalloc1(disc->ndof, &g));
     for (PetscInt i = 0; i < disc->ncell; ++i) {
-      const PetscInt *g = disc->gidx + i * disc->ndof;
+      IndDiscCellDofs(disc, i, PETSC_TRUE, g);
       PetscCall(MatSetValues(P, disc->ndof, g, disc->ndof, g, zeros, INSERT_VALUES));
     }
+    PetscCall(PetscFree(g));
     PetscCall(PetscFree(zeros));
     PetscCall(MatAssemblyBegin(P, MAT_FINAL_ASSEMBLY));
     PetscCall(MatAssemblyEnd(P, MAT_FINAL_ASSEMBLY));

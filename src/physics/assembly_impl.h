@@ -36,11 +36,12 @@ struct _p_IndAssembly {
    Xloc) of local cell i. */
 static inline void GatherCell(IndAssembly a, PetscInt i, const PetscScalar *u, const PetscScalar *xn)
 {
-  const PetscInt *idx = a->layout->lidx + i * a->layout->ndof;
-  for (PetscInt k = 0; k < a->layout->ndof; ++k) {
-    a->ue[k] = PetscRealPart(u[idx[k]]);
-    a->xe[k] = PetscRealPart(xn[idx[k]]);
-  }
+  const PetscInt *node = a->layout->lnode + i * a->layout->nb;
+  for (PetscInt b = 0; b < a->layout->nb; ++b)
+    for (int c = 0; c < 3; ++c) {
+      a->ue[3 * b + c] = PetscRealPart(u[3 * node[b] + c]);
+      a->xe[3 * b + c] = PetscRealPart(xn[3 * node[b] + c]);
+    }
 }
 
 /* The constitutive update of one quadrature point from its committed history old (IND_HISTORY_NVAL

@@ -20,7 +20,7 @@
 
 struct _p_IndMatInsert {
   PetscInt        nb, ncell;
-  const PetscInt *gidx;   /* the discretisation's global indices, ncell x 3 nb */
+  const PetscInt *gnode;  /* the discretisation's global node numbers, ncell x nb (dofs 3 n + 0, 1, 2) */
   int16_t        *pos;    /* ncell x nb x nb: position in the row + 1, negated in the off-diagonal part; or REMOTE */
   PetscInt       *roff, *rslot; /* cell i's REMOTE blocks' slots: rslot[roff[i]..roff[i + 1]) in the cell's order */
   PetscInt        rstart, rend;
@@ -121,7 +121,7 @@ static PetscErrorCode BuildExchange(IndMatInsert m, Mat J, const Pattern *pt, Pe
     for (PetscInt a = 0; a < nb; ++a)
       for (PetscInt b = 0; b < nb; ++b)
         if (m->pos[(i * nb + a) * nb + b] == REMOTE)
-          keys[nkey++] = (PetscInt64)m->gidx[i * 3 * nb + 3 * a] * M + m->gidx[i * 3 * nb + 3 * b];
+          keys[nkey++] = (PetscInt64)(3 * m->gnode[i * nb + a]) * M + 3 * m->gnode[i * nb + b];
   PetscCall(PetscSortInt64(nkey, keys));
   m->nsend = 0;
   for (PetscInt k = 0; k < nkey; ++k)
@@ -131,7 +131,7 @@ static PetscErrorCode BuildExchange(IndMatInsert m, Mat J, const Pattern *pt, Pe
   for (PetscInt i = 0, k = 0; i < m->ncell; ++i) {
     for (PetscInt a = 0; a < nb; ++a)
       for (PetscInt b = 0; b < nb; ++b) {
-        const PetscInt64 key = (PetscInt64)m->gidx[i * 3 * nb + 3 * a] * M + m->gidx[i * 3 * nb + 3 * b];
+        const PetscInt64 key = (PetscInt64)(3 * m->gnode[i * nb + a]) * M + 3 * m->gnode[i * nb + b];
         PetscInt         lo = 0, hi = m->nsend - 1;
         if (m->pos[(i * nb + a) * nb + b] != REMOTE) continue;
         while (lo < hi) {
@@ -217,7 +217,7 @@ PetscErrorCode IndMatInsertCreate(IndDisc disc, Mat J, IndMatInsert *out)
     PetscCall(IndDiscGetLayout(disc, &L));
     m->nb    = L->nb;
     m->ncell = L->ncell;
-    m->gidx  = L->gidx;
+    m->gnode = L->gnode;
   }
   PetscCall(MatGetOwnershipRange(J, &m->rstart, &m->rend));
   PetscCall(MatGetOwnershipRangeColumn(J, &pt.cstart, NULL));
@@ -233,12 +233,12 @@ PetscErrorCode IndMatInsertCreate(IndDisc disc, Mat J, IndMatInsert *out)
   pt.jao = jao;
   PetscCall(PetscMalloc1(m->ncell * m->nb * m->nb, &m->pos));
   for (PetscInt i = 0; i < m->ncell && ok; ++i) {
-    const PetscInt *g = m->gidx + i * 3 * m->nb;
+    const PetscInt *g = m->gnode + i * m->nb;
     for (PetscInt a = 0; a < m->nb && ok; ++a) {
-      const PetscInt row = g[3 * a];
+      const PetscInt row = 3 * g[a];
       for (PetscInt b = 0; b < m->nb && ok; ++b) {
         PetscInt p = REMOTE; /* a row of another rank: a slot, below */
-        if (row >= m->rstart && row < m->rend) ok = BlockPosition(&pt, row - m->rstart, g[3 * b], &p);
+        if (row >= m->rstart && row < m->rend) ok = BlockPosition(&pt, row - m->rstart, 3 * g[b], &p);
         m->pos[(i * m->nb + a) * m->nb + b] = (int16_t)p;
       }
     }
@@ -304,12 +304,12 @@ static inline void AddBlock(IndMatInsert m, PetscInt lr, PetscInt p, const Petsc
 PetscErrorCode IndMatInsertCell(IndMatInsert m, PetscInt i, const PetscReal *Ke)
 {
   const PetscInt  nb = m->nb, nd = 3 * nb;
-  const PetscInt *g  = m->gidx + i * nd, *slot = m->roff ? m->rslot + m->roff[i] : NULL;
+  const PetscInt *g  = m->gnode + i * nb, *slot = m->roff ? m->rslot + m->roff[i] : NULL;
   const int16_t  *pos = m->pos + i * nb * nb;
 
   PetscFunctionBeginUser;
   for (PetscInt a = 0; a < nb; ++a) {
-    const PetscInt lr = g[3 * a] - m->rstart;
+    const PetscInt lr = 3 * g[a] - m->rstart;
     for (PetscInt b = 0; b < nb; ++b) {
       const PetscInt   p  = pos[a * nb + b];
       const PetscReal *Kb = Ke + 3 * a * nd + 3 * b;

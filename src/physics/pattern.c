@@ -11,7 +11,6 @@
 static PetscErrorCode NodeGraph(const IndDiscLayout *disc, MPI_Comm comm, PetscInt nlocal, Mat *G)
 {
   Mat          P;
-  PetscInt    *nodes;
   PetscScalar *zeros;
 
   PetscFunctionBeginUser;
@@ -19,18 +18,10 @@ static PetscErrorCode NodeGraph(const IndDiscLayout *disc, MPI_Comm comm, PetscI
   PetscCall(MatSetType(P, MATPREALLOCATOR));
   PetscCall(MatSetSizes(P, nlocal / 3, nlocal / 3, PETSC_DETERMINE, PETSC_DETERMINE));
   PetscCall(MatSetUp(P));
-  PetscCall(PetscMalloc1(disc->nb, &nodes));
   PetscCall(PetscCalloc1(disc->nb * disc->nb, &zeros));
-  for (PetscInt i = 0; i < disc->ncell; ++i) {
-    const PetscInt *g = disc->gidx + i * disc->ndof;
-    for (PetscInt a = 0; a < disc->nb; ++a) {
-      PetscCheck(g[3 * a] % 3 == 0 && g[3 * a + 1] == g[3 * a] + 1 && g[3 * a + 2] == g[3 * a] + 2, PETSC_COMM_SELF,
-        PETSC_ERR_PLIB, "The dofs of a node are not three consecutive from a multiple of 3");
-      nodes[a] = g[3 * a] / 3;
-    }
-    PetscCall(MatSetValues(P, disc->nb, nodes, disc->nb, nodes, zeros, INSERT_VALUES));
-  }
-  PetscCall(PetscFree(nodes));
+  for (PetscInt i = 0; i < disc->ncell; ++i)
+    PetscCall(MatSetValues(P, disc->nb, disc->gnode + i * disc->nb, disc->nb, disc->gnode + i * disc->nb, zeros,
+                           INSERT_VALUES));
   PetscCall(PetscFree(zeros));
   PetscCall(MatAssemblyBegin(P, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(P, MAT_FINAL_ASSEMBLY));
