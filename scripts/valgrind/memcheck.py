@@ -39,7 +39,9 @@ SUPPRESSIONS = os.path.join(HERE, "openmpi.supp")
 # plastic_uniaxial_cutback_hex_Q2 (11 s; plastic_uniaxial_return_cutback rejects steps too), two of the three
 # plastic_newton_densifying_* (8 and 11 s; _finite runs the same return map and tangent, unit_densification
 # runs them alone) and unit_lagged_smoother (23 s under valgrind, of which our code is one call that resets a
-# smoother). Plus the
+# smoother), unit_rigid_modes_rebuilt (15 s; the program of unit_rigid_modes, which runs), matinsert_tet_P1 (9 s; the
+# program of matinsert_hex_Q2, whose P1 kernels run in patch_tet_P1) and all but the P1 variant of disc_layout_*
+# (the same loops over other cells). Plus the
 # flat-punch contact patch test, which also runs on 2 ranks, a small indentation that writes every
 # output file (HDF5 fields, XDMF, curve, summary) and a small scratch (scratch.csv, the sliding contact).
 LABELS = {"unit", "component"}
@@ -48,7 +50,8 @@ SLOW = re.compile(r"^(mms_|plastic_newton(_finite)?_tet_P2|plastic_newton_(power
                   r"run_checks_(edge_small|edge_quarter|area|inverted|loading_touches)|"
                   r"axisymmetric_newton_(small_Q1|small_P2|finite_P1)|plastic_newton_elastic_tangent|"
                   r"plastic_cycle_hex_Q2|uniaxial_roller_hex_Q2|plastic_uniaxial_cutback_hex_Q2|"
-                  r"plastic_newton_densifying_(small|hardening)|unit_lagged_smoother)")
+                  r"plastic_newton_densifying_(small|hardening)|unit_lagged_smoother|unit_rigid_modes_rebuilt|"
+                  r"matinsert_tet_P1|disc_layout_(tet_P2|hex_))")
 TWO_RANKS = "contact_patch_hex_Q1_np2"
 EXTRA = {TWO_RANKS, "xdmf_indent_run", "example_scratch_np2"}
 VALGRIND_EXIT = 99  # --error-exitcode: tells memcheck's errors from the test's own failures
