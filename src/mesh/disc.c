@@ -68,15 +68,12 @@ static PetscErrorCode CoordinateBasis(PetscInt dim, PetscBool simplex, PetscQuad
     "Cells with %" PetscInt_FMT " coordinate nodes are not supported (first- or second-order meshes only)", nn);
 }
 
-/* Every per-cell closure is a search through the mesh's cell-type label in PETSc 3.18 (10 to 15 us
-   a hexahedron); the indices are taken once, and the node positions and the geometry follow from
-   them and the vertex coordinates without another closure. */
 /* DMPlex charts the displacement's section over every point of the mesh, though only the vertices (and, for P2, the
-   edges) carry dofs: on a P1 tetrahedral mesh the cells, faces and edges are 25 of every 26 points, and the section,
-   its field's and the global section made from them hold 8 bytes a point each (33 MB of a rank's 276 MB on the
-   README's mesh). Charted over the range of points that carry dofs, with the same offsets, it numbers every dof as
-   before: PETSc's closures, global sections and star forests skip points outside a chart, as they do for the
-   coordinates' section, and indent's own loops over closures ask IndDiscPointDof. */
+   edges) carry dofs: on the README's P1 mesh one point in 25 is a vertex, and the section, its field's, the global
+   section made from them and its field's held 8 bytes a point each (22 MB of a rank's 276 MB there). Charted over
+   the range of points that carry dofs, with the same offsets, it numbers every dof as before: PETSc's closures,
+   global sections and star forests skip points outside a chart, as they do for the coordinates' section, and
+   indent's own loops over closures ask IndDiscPointDof. */
 static PetscErrorCode ChartOverDofs(DM dm)
 {
   PetscSection s, t;
@@ -92,8 +89,8 @@ static PetscErrorCode ChartOverDofs(DM dm)
     PetscCall(PetscSectionGetDof(s, p, &dof));
     if (dof) lo = PetscMin(lo, p), hi = p + 1;
   }
-  if (lo >= hi) lo = hi = pStart; /* a rank without cells */
-  if (lo == pStart && hi == pEnd) PetscFunctionReturn(PETSC_SUCCESS);
+  /* a rank without dofs, or dofs on every point (Q2): nothing to trim */
+  if (lo >= hi || (lo == pStart && hi == pEnd)) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(ISCreateStride(PETSC_COMM_SELF, hi - lo, lo, 1, &range));
   PetscCall(PetscSectionCreateSubdomainSection(s, range, &t));
   PetscCall(ISDestroy(&range));
@@ -102,6 +99,9 @@ static PetscErrorCode ChartOverDofs(DM dm)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Every per-cell closure is a search through the mesh's cell-type label in PETSc 3.18 (10 to 15 us
+   a hexahedron); the indices are taken once, and the node positions and the geometry follow from
+   them and the vertex coordinates without another closure. */
 static PetscErrorCode CacheIndices(IndDisc disc)
 {
   DM                     dm = disc->dm;
