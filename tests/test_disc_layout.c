@@ -1,6 +1,6 @@
-static const char help[] = "The displacement's layout against PETSc's own: the section charted over the points that carry\n"
-                           "dofs numbers every dof (local and global) as DMPlexCreateSection's section over the whole\n"
-                           "mesh does, and the cells' node numbers give the closure indices of that section.\n";
+static const char help[] = "The displacement's layout against PETSc's own: the section charted over the points\n"
+                           "that carry dofs numbers every dof (local and global) as DMPlexCreateSection's section over\n"
+                           "the whole mesh does, and the cells' node numbers give the closure indices of that section.\n";
 
 #include "ind_app.h"
 
@@ -78,9 +78,10 @@ int main(int argc, char **argv)
   PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &bad, 1, MPIU_INT, MPI_SUM, PETSC_COMM_WORLD));
   PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &points, 1, MPIU_INT, MPI_SUM, PETSC_COMM_WORLD));
   PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &charted, 1, MPIU_INT, MPI_SUM, PETSC_COMM_WORLD));
-  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s%" PetscInt_FMT ": section charted over %" PetscInt_FMT " of %" PetscInt_FMT
-                        " points; %" PetscInt_FMT " mismatches\n", L->simplex ? "P" : "Q", L->degree, charted, points,
-                        bad));
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD,
+                        "%s%" PetscInt_FMT ": section charted over %" PetscInt_FMT " of %" PetscInt_FMT
+                        " points; %" PetscInt_FMT " mismatches\n",
+                        L->simplex ? "P" : "Q", L->degree, charted, points, bad));
   if (L->degree == 1 && charted >= points) ++bad; /* L is the app's: read before it goes */
   PetscCall(DMDestroy(&clone));
   PetscCall(IndAppDestroy(&app));
