@@ -1,6 +1,7 @@
 static const char help[] = "The displacement's layout against PETSc's own: the section charted over the points\n"
-                           "that carry dofs numbers every dof (local and global) as DMPlexCreateSection's section over\n"
-                           "the whole mesh does, and the cells' node numbers give the closure indices of that section.\n";
+                           "that carry dofs numbers every dof (local and global) as DMPlexCreateSection's\n"
+                           "section over the whole mesh does, and the cells' node numbers give the closure\n"
+                           "indices of that section.\n";
 
 #include "ind_app.h"
 
