@@ -62,14 +62,10 @@ PetscErrorCode IndOutputResume(IndOutput o, PetscInt npts, const IndCurvePoint *
 
 PetscErrorCode IndOutputWriteCellKeys(IndOutput o)
 {
-  PetscReal *keys;
-
   PetscFunctionBeginUser;
-  PetscCall(IndCellCentroids(o->disc, &keys));
   PetscCall(PetscViewerHDF5PushGroup(o->viewer, "/topology"));
-  PetscCall(IndRowsWrite(o->viewer, "cell_centroids", o->layout->ncell, 3, keys));
+  PetscCall(IndRowsWriteCellCentroids(o->viewer, "cell_centroids", o->disc));
   PetscCall(PetscViewerHDF5PopGroup(o->viewer));
-  PetscCall(PetscFree(keys));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
