@@ -27,6 +27,3 @@ typedef struct _n_IndH5Rows *IndH5Rows;
 PetscErrorCode IndH5RowsBegin(PetscViewer viewer, const char name[], PetscInt n, PetscInt bs, IndH5Rows *rows);
 PetscErrorCode IndH5RowsWrite(IndH5Rows rows, PetscInt first, PetscInt count, const PetscReal *values);
 PetscErrorCode IndH5RowsEnd(IndH5Rows *rows);
-/* The same for integers (PetscInt); End as above. */
-PetscErrorCode IndH5IntRowsBegin(PetscViewer viewer, const char name[], PetscInt n, PetscInt bs, IndH5Rows *rows);
-PetscErrorCode IndH5IntRowsWrite(IndH5Rows rows, PetscInt first, PetscInt count, const PetscInt *values);

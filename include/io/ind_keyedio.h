@@ -23,9 +23,6 @@ PetscErrorCode IndRowsRead(PetscViewer viewer, const char name[], PetscInt bs, V
 PetscErrorCode IndRowsChecksumMatches(PetscViewer viewer, const char name[], Vec x, PetscBool *has, PetscBool *same);
 /* The keys of this rank's cells (their centroids), allocated (PetscFree). */
 PetscErrorCode IndCellCentroids(IndDisc disc, PetscReal **keys);
-/* Collective: the same keys written as IndRowsWrite writes them (dataset name of the current group, with its
-   checksum), a block of cells at a time: never all of them at once. */
-PetscErrorCode IndRowsWriteCellCentroids(PetscViewer viewer, const char name[], IndDisc disc);
 /* Collective: for each of the n keys mine, the bs values that dataset values (NULL: the row number)
    holds beside it in the file's key dataset keys (both in the current group); an error naming what
    and file (as the message should name it, e.g. "-restart: checkpoint 'x.h5'") when a key is missing

@@ -124,20 +124,6 @@ PetscErrorCode IndH5RowsWrite(IndH5Rows w, PetscInt first, PetscInt count, const
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode IndH5IntRowsBegin(PetscViewer v, const char name[], PetscInt n, PetscInt bs, IndH5Rows *w)
-{
-  PetscFunctionBeginUser;
-  PetscCall(RowsBegin(v, name, n, bs, IND_H5_INT, w));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-PetscErrorCode IndH5IntRowsWrite(IndH5Rows w, PetscInt first, PetscInt count, const PetscInt *rows)
-{
-  PetscFunctionBeginUser;
-  PetscCall(RowsWrite(w, first, count, rows));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 PetscErrorCode IndH5RowsEnd(IndH5Rows *w)
 {
   PetscFunctionBeginUser;

@@ -31,35 +31,21 @@ static uint64_t Mix(uint64_t z)
   return z ^ (z >> 31);
 }
 
-/* This rank's part of the checksum: n values at global positions rstart.., a sum modulo 2^64 (it wraps), so that
-   parts add up in any order. */
-static uint64_t HashValues(PetscInt n, PetscInt rstart, const PetscScalar *a)
-{
-  uint64_t h = 0;
-
-  for (PetscInt k = 0; k < n; ++k) {
-    const PetscReal r = PetscRealPart(a[k]);
-    uint64_t        bits;
-    memcpy(&bits, &r, sizeof(bits));
-    h += Mix(bits ^ Mix((uint64_t)(rstart + k) + 0x9e3779b97f4a7c15ULL));
-  }
-  return h;
-}
-
-static PetscErrorCode ChecksumText(MPI_Comm comm, uint64_t h, char sum[IND_ROWS_CHECKSUM_LEN])
-{
-  PetscFunctionBeginUser;
-  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &h, 1, MPI_UINT64_T, MPI_SUM, comm));
-  PetscCall(PetscSNPrintf(sum, IND_ROWS_CHECKSUM_LEN, "%016" PRIx64, h));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 /* n values at global positions rstart.. of a vector spread over comm */
 static PetscErrorCode ChecksumValues(MPI_Comm comm, PetscInt n, PetscInt rstart, const PetscScalar *a,
                                      char sum[IND_ROWS_CHECKSUM_LEN])
 {
+  uint64_t h = 0;
+
   PetscFunctionBeginUser;
-  PetscCall(ChecksumText(comm, HashValues(n, rstart, a), sum));
+  for (PetscInt k = 0; k < n; ++k) {
+    const PetscReal r = PetscRealPart(a[k]);
+    uint64_t        bits;
+    memcpy(&bits, &r, sizeof(bits));
+    h += Mix(bits ^ Mix((uint64_t)(rstart + k) + 0x9e3779b97f4a7c15ULL)); /* wraps: a sum modulo 2^64 */
+  }
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &h, 1, MPI_UINT64_T, MPI_SUM, comm));
+  PetscCall(PetscSNPrintf(sum, IND_ROWS_CHECKSUM_LEN, "%016" PRIx64, h));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -141,43 +127,6 @@ PetscErrorCode IndCellCentroids(IndDisc disc, PetscReal **keys)
   PetscCall(IndDiscGetDM(disc, &dm));
   PetscCall(PetscMalloc1(3 * L->ncell + 1, keys));
   for (PetscInt i = 0; i < L->ncell; ++i) PetscCall(IndPointCentroid(dm, L->cStart + i, *keys + 3 * i));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-/* Cells whose keys are computed and written together (24 bytes a cell). */
-#define KEY_BLOCK 16384
-
-PetscErrorCode IndRowsWriteCellCentroids(PetscViewer v, const char name[], IndDisc disc)
-{
-  MPI_Comm             comm = PetscObjectComm((PetscObject)v);
-  const IndDiscLayout *L;
-  DM                   dm;
-  IndH5Rows            w;
-  PetscReal           *keys;
-  PetscInt             nblocks, below = 0, values;
-  uint64_t             h = 0;
-  char                 sum[IND_ROWS_CHECKSUM_LEN];
-
-  PetscFunctionBeginUser;
-  PetscCall(IndDiscGetLayout(disc, &L));
-  PetscCall(IndDiscGetDM(disc, &dm));
-  nblocks = (L->ncell + KEY_BLOCK - 1) / KEY_BLOCK;
-  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &nblocks, 1, MPIU_INT, MPI_MAX, comm));
-  values = 3 * L->ncell;
-  PetscCallMPI(MPI_Scan(&values, &below, 1, MPIU_INT, MPI_SUM, comm));
-  below -= values;
-  PetscCall(PetscMalloc1(3 * KEY_BLOCK, &keys));
-  PetscCall(IndH5RowsBegin(v, name, L->ncell, 3, &w));
-  for (PetscInt b = 0; b < nblocks; ++b) {
-    const PetscInt first = PetscMin(b * KEY_BLOCK, L->ncell), count = PetscMin(KEY_BLOCK, L->ncell - first);
-    for (PetscInt i = 0; i < count; ++i) PetscCall(IndPointCentroid(dm, L->cStart + first + i, keys + 3 * i));
-    h += HashValues(3 * count, below + 3 * first, (const PetscScalar *)keys);
-    PetscCall(IndH5RowsWrite(w, first, count, keys));
-  }
-  PetscCall(IndH5RowsEnd(&w));
-  PetscCall(PetscFree(keys));
-  PetscCall(ChecksumText(comm, h, sum));
-  PetscCall(PetscViewerHDF5WriteAttribute(v, name, "checksum", PETSC_STRING, sum));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

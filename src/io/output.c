@@ -75,16 +75,12 @@ static PetscErrorCode GatherVertexValues(IndOutput o, PetscSection src, const Pe
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* The local cells' vertices in global vertex numbers and VTK/XDMF vertex order, written as dataset "cells" of the
-   current group a block of cells at a time. */
-#define TOPOLOGY_BLOCK 16384
-
-static PetscErrorCode WriteTopology(IndOutput o)
+/* Cell-to-vertex connectivity of the local cells in global vertex numbers and VTK/XDMF vertex order (PetscFree). */
+static PetscErrorCode CreateTopology(IndOutput o, PetscInt **topo)
 {
   DM           dm = o->vdm;
   PetscSection gs;
-  PetscInt     cStart, cEnd, vStart, vEnd, *conn, nblocks;
-  IndH5Rows    w;
+  PetscInt     cStart, cEnd, vStart, vEnd, *conn, n = 0;
   /* DMPlex orders a hexahedron's top face the other way round from VTK, and its tetrahedra with the
      opposite orientation; these maps give VTK's positive-volume order. */
   const PetscInt hex[8] = {0, 3, 2, 1, 4, 7, 6, 5}, tet[4] = {1, 0, 2, 3}, plane[4] = {0, 1, 2, 3};
@@ -95,32 +91,22 @@ static PetscErrorCode WriteTopology(IndOutput o)
   PetscCall(DMGetGlobalSection(dm, &gs));
   PetscCall(DMPlexGetHeightStratum(dm, 0, &cStart, &cEnd));
   PetscCall(DMPlexGetDepthStratum(dm, 0, &vStart, &vEnd));
-  nblocks = (cEnd - cStart + TOPOLOGY_BLOCK - 1) / TOPOLOGY_BLOCK;
-  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &nblocks, 1, MPIU_INT, MPI_MAX, PetscObjectComm((PetscObject)dm)));
-  PetscCall(PetscMalloc1(TOPOLOGY_BLOCK * o->corners, &conn));
-  PetscCall(IndH5IntRowsBegin(o->viewer, "cells", cEnd - cStart, o->corners, &w));
-  for (PetscInt b = 0; b < nblocks; ++b) {
-    const PetscInt first = PetscMin(b * TOPOLOGY_BLOCK, cEnd - cStart);
-    const PetscInt count = PetscMin(TOPOLOGY_BLOCK, cEnd - cStart - first);
-    PetscInt       n     = 0;
-    for (PetscInt c = cStart + first; c < cStart + first + count; ++c) {
-      PetscInt *closure = NULL, ncl, verts[8], nv = 0;
-      PetscCall(DMPlexGetTransitiveClosure(dm, c, PETSC_TRUE, &ncl, &closure));
-      for (PetscInt j = 0; j < ncl; ++j) {
-        PetscInt p = closure[2 * j], off;
-        if (p < vStart || p >= vEnd) continue;
-        PetscCall(PetscSectionGetOffset(gs, p, &off));
-        verts[nv++] = (off >= 0 ? off : -(off + 1)) / 3;
-      }
-      PetscCall(DMPlexRestoreTransitiveClosure(dm, c, PETSC_TRUE, &ncl, &closure));
-      PetscCheck(nv == o->corners, PETSC_COMM_SELF, PETSC_ERR_PLIB,
-        "Cell %" PetscInt_FMT " has %" PetscInt_FMT " vertices", c, nv);
-      for (PetscInt k = 0; k < nv; ++k) conn[n++] = verts[perm[k]];
+  PetscCall(PetscMalloc1((cEnd - cStart) * o->corners, &conn));
+  for (PetscInt c = cStart; c < cEnd; ++c) {
+    PetscInt *closure = NULL, ncl, verts[8], nv = 0;
+    PetscCall(DMPlexGetTransitiveClosure(dm, c, PETSC_TRUE, &ncl, &closure));
+    for (PetscInt j = 0; j < ncl; ++j) {
+      PetscInt p = closure[2 * j], off;
+      if (p < vStart || p >= vEnd) continue;
+      PetscCall(PetscSectionGetOffset(gs, p, &off));
+      verts[nv++] = (off >= 0 ? off : -(off + 1)) / 3;
     }
-    PetscCall(IndH5IntRowsWrite(w, first, count, conn));
+    PetscCall(DMPlexRestoreTransitiveClosure(dm, c, PETSC_TRUE, &ncl, &closure));
+    PetscCheck(nv == o->corners, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+      "Cell %" PetscInt_FMT " has %" PetscInt_FMT " vertices", c, nv);
+    for (PetscInt k = 0; k < nv; ++k) conn[n++] = verts[perm[k]];
   }
-  PetscCall(IndH5RowsEnd(&w));
-  PetscCall(PetscFree(conn));
+  *topo = conn;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -156,6 +142,7 @@ static PetscErrorCode OpenFile(IndOutput o)
   Vec          X, coords;
   PetscSection cs;
   const PetscScalar *x;
+  PetscInt    *topo;
   PetscInt     n;
 
   PetscFunctionBeginUser;
@@ -185,11 +172,13 @@ static PetscErrorCode OpenFile(IndOutput o)
   PetscCall(PetscViewerHDF5PopGroup(o->viewer));
   PetscCall(VecDestroy(&coords));
 
+  PetscCall(CreateTopology(o, &topo));
   n = o->layout->ncell;
   PetscCallMPI(MPI_Allreduce(&n, &o->ncell, 1, MPIU_INT, MPI_SUM, comm));
   PetscCall(PetscViewerHDF5PushGroup(o->viewer, "/topology"));
-  PetscCall(WriteTopology(o));
+  PetscCall(IndH5WriteIntRows(o->viewer, "cells", n, o->corners, topo));
   PetscCall(PetscViewerHDF5PopGroup(o->viewer));
+  PetscCall(PetscFree(topo));
   PetscCall(IndOutputWriteCellKeys(o));
   PetscCall(PetscViewerHDF5PushTimestepping(o->viewer));
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -62,10 +62,14 @@ PetscErrorCode IndOutputResume(IndOutput o, PetscInt npts, const IndCurvePoint *
 
 PetscErrorCode IndOutputWriteCellKeys(IndOutput o)
 {
+  PetscReal *keys;
+
   PetscFunctionBeginUser;
+  PetscCall(IndCellCentroids(o->disc, &keys));
   PetscCall(PetscViewerHDF5PushGroup(o->viewer, "/topology"));
-  PetscCall(IndRowsWriteCellCentroids(o->viewer, "cell_centroids", o->disc));
+  PetscCall(IndRowsWrite(o->viewer, "cell_centroids", o->layout->ncell, 3, keys));
   PetscCall(PetscViewerHDF5PopGroup(o->viewer));
+  PetscCall(PetscFree(keys));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

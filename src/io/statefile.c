@@ -20,7 +20,7 @@ struct _p_IndStateFile {
   char          part[64];   /* the part being saved or loaded */
   Nodes         nodes;      /* made at the first node dataset */
   PetscBool     has_nodes, wrote_node_keys;
-  PetscReal    *cell_keys;  /* read: made at the first cell dataset */
+  PetscReal    *cell_keys;  /* made at the first cell dataset */
   PetscBool     wrote_cell_keys;
   char         *datasets;   /* written: "group/name\n" of each dataset, for the verification */
   size_t        len, cap;
@@ -277,13 +277,13 @@ PetscErrorCode IndStateCells(IndStateFile f, const char name[], PetscInt stride,
   PetscFunctionBeginUser;
   PetscCall(IndDiscGetLayout(f->disc, &L));
   PetscCall(MeshName(f, name, dset, sizeof(dset)));
+  if (!f->cell_keys) PetscCall(IndCellCentroids(f->disc, &f->cell_keys));
   PetscCall(PetscViewerHDF5PushGroup(f->v, "/cells"));
-  if (IndStateReading(f)) {
-    if (!f->cell_keys) PetscCall(IndCellCentroids(f->disc, &f->cell_keys));
+  if (IndStateReading(f))
     PetscCall(IndRowsJoin(f->v, "keys", dset, stride, "cells", f->what, L->ncell, f->cell_keys, v));
-  } else {
-    if (!f->wrote_cell_keys) { /* by blocks: a checkpoint holds no copy of the cells' keys */
-      PetscCall(IndRowsWriteCellCentroids(f->v, "keys", f->disc));
+  else {
+    if (!f->wrote_cell_keys) {
+      PetscCall(IndRowsWrite(f->v, "keys", L->ncell, 3, f->cell_keys));
       PetscCall(Record(f, "/cells", "keys"));
       f->wrote_cell_keys = PETSC_TRUE;
     }
