@@ -1,5 +1,5 @@
 static const char help[] = "Rows written straight to HDF5 are read back by PETSc's VecLoad in PETSc's layout, on\n"
-                           "any rank count, fixed and by timestep, whole or in parts, and their chunks are never filled.\n";
+                           "any rank count, fixed and by timestep, and their chunks are never filled.\n";
 
 #include <petscvec.h>
 #include "ind_h5rows.h"
@@ -30,33 +30,6 @@ static PetscErrorCode WriteStep(PetscViewer v, const char name[], PetscInt bs, P
   for (PetscInt i = 0; i < n; ++i)
     for (PetscInt k = 0; k < bs; ++k) rows[i * bs + k] = Value(below + i, k, s);
   PetscCall(IndH5WriteRows(v, name, n, bs, rows));
-  PetscCall(PetscFree(rows));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-/* The same rows written two at a time: every rank calls IndH5RowsWrite as often as the rank with the most rows,
-   the others with none left. */
-static PetscErrorCode WriteStepInParts(PetscViewer v, const char name[], PetscInt bs, PetscInt s, PetscInt below)
-{
-  PetscMPIInt rank;
-  PetscInt    n, parts;
-  PetscReal  *rows;
-  IndH5Rows   w;
-
-  PetscFunctionBeginUser;
-  PetscCallMPI(MPI_Comm_rank(PETSC_COMM_WORLD, &rank));
-  n     = LocalRows(rank);
-  parts = (n + 1) / 2;
-  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &parts, 1, MPIU_INT, MPI_MAX, PETSC_COMM_WORLD));
-  PetscCall(PetscMalloc1(2 * bs, &rows));
-  PetscCall(IndH5RowsBegin(v, name, n, bs, &w));
-  for (PetscInt p = 0; p < parts; ++p) {
-    const PetscInt first = PetscMin(2 * p, n), count = PetscMin(2, n - first);
-    for (PetscInt i = 0; i < count; ++i)
-      for (PetscInt k = 0; k < bs; ++k) rows[i * bs + k] = Value(below + first + i, k, s);
-    PetscCall(IndH5RowsWrite(w, first, count, rows));
-  }
-  PetscCall(IndH5RowsEnd(&w));
   PetscCall(PetscFree(rows));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -107,7 +80,6 @@ int main(int argc, char **argv)
   PetscCall(PetscViewerHDF5PushGroup(v, "/fixed"));
   PetscCall(WriteStep(v, "rows", 4, 0, below));
   PetscCall(WriteStep(v, "single", 1, 0, below));
-  PetscCall(WriteStepInParts(v, "parts", 4, 0, below));
   {
     PetscInt *ints;
     PetscCall(PetscMalloc1(2 * n + 1, &ints));
@@ -122,7 +94,6 @@ int main(int argc, char **argv)
   for (PetscInt s = 0; s < 3; ++s) {
     PetscCall(PetscViewerHDF5SetTimestep(v, s));
     PetscCall(WriteStep(v, "field", 3, s, below));
-    PetscCall(WriteStepInParts(v, "field_parts", 6, s, below));
   }
   PetscCall(PetscViewerHDF5PopTimestepping(v));
   PetscCall(PetscViewerHDF5PopGroup(v));
@@ -134,8 +105,6 @@ int main(int argc, char **argv)
   if (!rank) Report("fixed rows of 4, read by VecLoad", worst, 0);
   PetscCall(ReadBack(v, "single", 1, -1, &worst));
   if (!rank) Report("fixed rows of 1, read by VecLoad", worst, 0);
-  PetscCall(ReadBack(v, "parts", 4, -1, &worst));
-  if (!rank) Report("fixed rows of 4 written two at a time, read by VecLoad", worst, 0);
   PetscCall(PetscViewerHDF5PopGroup(v));
   PetscCall(PetscViewerHDF5SetBaseDimension2(v, PETSC_TRUE));
   PetscCall(PetscViewerHDF5PushGroup(v, "/steps"));
@@ -143,8 +112,6 @@ int main(int argc, char **argv)
   for (PetscInt s = 0; s < 3; ++s) {
     PetscCall(ReadBack(v, "field", 3, s, &worst));
     if (!rank) Report("step of an extensible field, read by VecLoad", worst, 0);
-    PetscCall(ReadBack(v, "field_parts", 6, s, &worst));
-    if (!rank) Report("step of an extensible field written two rows at a time, read by VecLoad", worst, 0);
   }
   PetscCall(PetscViewerHDF5PopTimestepping(v));
   PetscCall(PetscViewerHDF5PopGroup(v));

@@ -106,7 +106,7 @@ static PetscErrorCode CheckStep(IndApp app, const IndStepResult *step, void *ctx
     Vec Uloc;
     PetscCall(DMGetLocalVector(IndAppGetDM(app), &Uloc));
     PetscCall(DMGlobalToLocal(IndAppGetDM(app), IndAppGetSolution(app), INSERT_VALUES, Uloc));
-    PetscCall(IndAssemblyCellAverages(IndAppGetAssembly(app), Uloc, 0, CellCount(app), &f));
+    PetscCall(IndAssemblyCellAverages(IndAppGetAssembly(app), Uloc, &f));
     PetscCall(DMRestoreLocalVector(IndAppGetDM(app), &Uloc));
   }
   for (PetscInt i = 0; i < CellCount(app); ++i) {

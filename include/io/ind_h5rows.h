@@ -19,11 +19,3 @@
 PetscErrorCode IndH5WriteRows(PetscViewer viewer, const char name[], PetscInt n, PetscInt bs, const PetscReal *rows);
 /* The same for integers (PetscInt), as ISView writes them. */
 PetscErrorCode IndH5WriteIntRows(PetscViewer viewer, const char name[], PetscInt n, PetscInt bs, const PetscInt *rows);
-
-/* The same dataset of reals written in parts, so that no rank holds all its n rows at once: Begin creates it (or
-   the current step's slab), each Write gives rows first .. first + count - 1 of this rank's n, End closes it. All
-   three are collective: every rank calls Write as many times (with count 0 once its rows are written). */
-typedef struct _n_IndH5Rows *IndH5Rows;
-PetscErrorCode IndH5RowsBegin(PetscViewer viewer, const char name[], PetscInt n, PetscInt bs, IndH5Rows *rows);
-PetscErrorCode IndH5RowsWrite(IndH5Rows rows, PetscInt first, PetscInt count, const PetscReal *values);
-PetscErrorCode IndH5RowsEnd(IndH5Rows *rows);

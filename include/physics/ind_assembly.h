@@ -67,9 +67,7 @@ PetscErrorCode IndAssemblyJacobian(IndAssembly assembly, Vec Uloc, Mat J);
 /* The Jacobian with the elastic tangent at every point (an elastic unloading from the current state), into any
    matrix of J's layout (J itself at its cached positions, any other with MatSetValues). */
 PetscErrorCode IndAssemblyElasticJacobian(IndAssembly assembly, Vec Uloc, Mat K);
-/* Local cells first .. first + count - 1, into rows 0 .. count - 1 of fields' arrays. */
-PetscErrorCode IndAssemblyCellAverages(IndAssembly assembly, Vec Uloc, PetscInt first, PetscInt count,
-                                       IndCellFields *fields);
+PetscErrorCode IndAssemblyCellAverages(IndAssembly assembly, Vec Uloc, IndCellFields *fields);
 /* Local cells whose deformation gradient F = I + grad u has det F <= 0 at a quadrature point (inverted
    by the displacement Uloc), and the smallest det F met. The finite-strain residual fails such a point,
    so Newton cuts the step back; at small strain nothing stops them, and an accepted state is checked

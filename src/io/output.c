@@ -262,14 +262,22 @@ PetscErrorCode IndOutputSetStepInfo(IndOutput o, PetscInt step, PetscReal t, Pet
 static PetscErrorCode CreateFieldObjects(IndOutput o)
 {
   MPI_Comm comm = PetscObjectComm((PetscObject)o->dm);
-  PetscInt nv;
+  PetscInt nv, nc = o->layout->ncell;
 
   PetscFunctionBeginUser;
   if (!o->vdm) PetscCall(CreateVertexDM(o->dm, &o->vdm));
   PetscCall(OwnedVertices(o, &nv));
   PetscCall(DMCreateLocalVector(o->dm, &o->Uloc));
   PetscCall(DMCreateLocalVector(o->vdm, &o->vloc));
+  /* cells are not shared (no overlap): local cell i is row i of this rank's share of a cell field */
   PetscCall(CreateRowsVec(comm, nv, 3, "displacement", &o->disp));
+  PetscCall(CreateRowsVec(comm, nc, 6, "stress", &o->stress));
+  PetscCall(CreateRowsVec(comm, nc, 6, "strain", &o->strain));
+  PetscCall(CreateRowsVec(comm, nc, 1, "von_mises", &o->vonmises));
+  PetscCall(CreateRowsVec(comm, nc, 1, "plastic_strain", &o->plastic));
+  PetscCall(CreateRowsVec(comm, nc, 1, "back_stress", &o->back));
+  PetscCall(CreateRowsVec(comm, nc, 1, "yielding", &o->yielding));
+  if (o->densifying) PetscCall(CreateRowsVec(comm, nc, 1, "compaction", &o->compaction));
   if (o->contact) {
     PetscCall(DMCreateGlobalVector(o->dm, &o->Gc));
     PetscCall(DMCreateLocalVector(o->dm, &o->Cloc));
@@ -282,7 +290,8 @@ static PetscErrorCode CreateFieldObjects(IndOutput o)
 
 static PetscErrorCode DestroyFieldVectors(IndOutput o)
 {
-  Vec *v[] = {&o->Uloc, &o->vloc, &o->disp, &o->Gc, &o->Cloc, &o->c3, &o->pressure, &o->status};
+  Vec *v[] = {&o->Uloc, &o->vloc, &o->disp, &o->stress, &o->strain, &o->vonmises, &o->plastic, &o->back, &o->yielding,
+              &o->compaction, &o->Gc, &o->Cloc, &o->c3, &o->pressure, &o->status};
 
   PetscFunctionBeginUser;
   for (size_t k = 0; k < sizeof(v) / sizeof(v[0]); ++k) PetscCall(VecDestroy(v[k]));
@@ -450,57 +459,11 @@ static PetscErrorCode GatherContactFields(IndOutput o)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* The cells' fields are computed and written this many cells at a time (17 values a cell: 2.2 MB). */
-#define CELL_BLOCK 16384
-
-/* Stress, strain, von Mises stress, p, back stress, yielding (and compaction) of the local cells, block by block:
-   all of them at once were 16 values a cell beside the solver's memory, and set the peak of a large run (63 MB a
-   rank on the paper's mesh at h_tip 3, 342k cells a rank). Cells are not shared (no overlap), so local cell i is
-   row i of this rank's share. A resumed file on another rank count keeps its own order of the cells
-   (IndOutputViewField): there the fields are made whole, one block. */
-static PetscErrorCode WriteCellFields(IndOutput o, IndAssembly assembly)
-{
-  static const char *const names[] = {"stress", "strain", "von_mises", "plastic_strain", "back_stress", "yielding",
-                                      "compaction"};
-  static const PetscInt    bs[]    = {6, 6, 1, 1, 1, 1, 1};
-  MPI_Comm                 comm    = PetscObjectComm((PetscObject)o->dm);
-  const PetscInt           nf = o->densifying ? 7 : 6, nc = o->layout->ncell;
-  const PetscInt           block = o->perm ? PetscMax(nc, 1) : CELL_BLOCK;
-  PetscInt                 nblocks = (nc + block - 1) / block;
-  PetscReal               *buf, *f[7];
-  IndH5Rows                w[7] = {NULL};
-
-  PetscFunctionBeginUser;
-  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &nblocks, 1, MPIU_INT, MPI_MAX, comm));
-  PetscCall(PetscMalloc1(17 * block, &buf));
-  f[0] = buf;
-  for (PetscInt k = 1; k < 7; ++k) f[k] = f[k - 1] + bs[k - 1] * block;
-  if (!o->perm)
-    for (PetscInt k = 0; k < nf; ++k) PetscCall(IndH5RowsBegin(o->viewer, names[k], nc, bs[k], &w[k]));
-  for (PetscInt b = 0; b < nblocks; ++b) {
-    const PetscInt first = PetscMin(b * block, nc), count = PetscMin(block, nc - first);
-    IndCellFields  cells = {f[0], f[1], f[3], f[4], f[5], nf == 7 ? f[6] : NULL};
-    PetscCall(IndAssemblyCellAverages(assembly, o->Uloc, first, count, &cells));
-    for (PetscInt i = 0; i < count; ++i) f[2][i] = IndVonMises(f[0] + 6 * i);
-    for (PetscInt k = 0; k < nf && !o->perm; ++k) PetscCall(IndH5RowsWrite(w[k], first, count, f[k]));
-  }
-  for (PetscInt k = 0; k < nf; ++k) {
-    if (o->perm) {
-      Vec x;
-      PetscCall(VecCreateMPIWithArray(comm, bs[k], bs[k] * nc, PETSC_DECIDE, f[k], &x));
-      PetscCall(PetscObjectSetName((PetscObject)x, names[k]));
-      PetscCall(IndOutputViewField(o, x, PETSC_TRUE));
-      PetscCall(VecDestroy(&x));
-    } else PetscCall(IndH5RowsEnd(&w[k]));
-  }
-  PetscCall(PetscFree(buf));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 PetscErrorCode IndOutputWriteStep(IndOutput o, PetscReal time, Vec U, IndAssembly assembly)
 {
   PetscSection       us;
   const PetscScalar *u;
+  PetscScalar       *vm;
 
   PetscFunctionBeginUser;
   if (!o->enabled) PetscFunctionReturn(PETSC_SUCCESS);
@@ -516,10 +479,35 @@ PetscErrorCode IndOutputWriteStep(IndOutput o, PetscReal time, Vec U, IndAssembl
   PetscCall(GatherVertexValues(o, us, u, o->disp));
   PetscCall(VecRestoreArrayRead(o->Uloc, &u));
 
+  /* Cells are not shared (no overlap), so local cell i is the i-th owned entry of each cell vector:
+     the assembly writes straight into them. */
+  PetscCall(VecGetArray(o->stress, &o->cells.stress));
+  PetscCall(VecGetArray(o->strain, &o->cells.strain));
+  PetscCall(VecGetArray(o->plastic, &o->cells.plastic));
+  PetscCall(VecGetArray(o->back, &o->cells.back_stress));
+  PetscCall(VecGetArray(o->yielding, &o->cells.yielding));
+  if (o->compaction) PetscCall(VecGetArray(o->compaction, &o->cells.compaction));
+  PetscCall(IndAssemblyCellAverages(assembly, o->Uloc, &o->cells));
+  PetscCall(VecGetArray(o->vonmises, &vm));
+  for (PetscInt i = 0; i < o->layout->ncell; ++i) vm[i] = IndVonMises(o->cells.stress + 6 * i);
+  PetscCall(VecRestoreArray(o->vonmises, &vm));
+  PetscCall(VecRestoreArray(o->stress, &o->cells.stress));
+  PetscCall(VecRestoreArray(o->strain, &o->cells.strain));
+  PetscCall(VecRestoreArray(o->plastic, &o->cells.plastic));
+  PetscCall(VecRestoreArray(o->back, &o->cells.back_stress));
+  PetscCall(VecRestoreArray(o->yielding, &o->cells.yielding));
+  if (o->compaction) PetscCall(VecRestoreArray(o->compaction, &o->cells.compaction));
+
   PetscCall(PetscViewerHDF5SetTimestep(o->viewer, o->nsteps));
   PetscCall(PetscViewerHDF5PushGroup(o->viewer, "/fields"));
   PetscCall(IndOutputViewField(o, o->disp, PETSC_FALSE));
-  PetscCall(WriteCellFields(o, assembly));
+  PetscCall(IndOutputViewField(o, o->stress, PETSC_TRUE));
+  PetscCall(IndOutputViewField(o, o->strain, PETSC_TRUE));
+  PetscCall(IndOutputViewField(o, o->vonmises, PETSC_TRUE));
+  PetscCall(IndOutputViewField(o, o->plastic, PETSC_TRUE));
+  PetscCall(IndOutputViewField(o, o->back, PETSC_TRUE));
+  PetscCall(IndOutputViewField(o, o->yielding, PETSC_TRUE));
+  if (o->compaction) PetscCall(IndOutputViewField(o, o->compaction, PETSC_TRUE));
   if (o->contact) {
     PetscCall(GatherContactFields(o));
     PetscCall(IndOutputViewField(o, o->pressure, PETSC_FALSE));

@@ -19,8 +19,10 @@ struct _p_IndOutput {
   char        h5name[PETSC_MAX_PATH_LEN];
   PetscViewer viewer;
   DM          vdm; /* the vertex layout (3 values a vertex); the fields are vectors of rows, without a DM */
-  Vec           Uloc, vloc, disp;
+  Vec           Uloc, vloc, disp, stress, strain, vonmises, plastic, back, yielding;
   PetscBool     densifying; /* a region is densifying: the cells' compaction is written too */
+  Vec           compaction;
+  IndCellFields cells; /* per local cell, filled by the assembly */
   IndContact    contact;                      /* NULL without an indenter */
   Vec           Gc, Cloc, c3, pressure, status; /* contact fields: disc layout (global, local),
     vertex rows of 3 and of 1 */

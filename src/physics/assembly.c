@@ -317,20 +317,17 @@ PetscErrorCode IndAssemblyCreateMatrix(IndAssembly a, Mat *J)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode IndAssemblyCellAverages(IndAssembly a, Vec Uloc, PetscInt first, PetscInt count, IndCellFields *out)
+PetscErrorCode IndAssemblyCellAverages(IndAssembly a, Vec Uloc, IndCellFields *out)
 {
   const IndDiscLayout *disc = a->layout;
   const PetscInt     nq = disc->nq, stride = a->history->stride, nval = a->history->nval;
   const PetscScalar *u, *xn, *hist;
 
   PetscFunctionBeginUser;
-  PetscCheck(first >= 0 && count >= 0 && first + count <= disc->ncell, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE,
-             "Cells %" PetscInt_FMT " to %" PetscInt_FMT " of %" PetscInt_FMT, first, first + count, disc->ncell);
   PetscCall(VecGetArrayRead(Uloc, &u));
   PetscCall(VecGetArrayRead(a->Xloc, &xn));
   PetscCall(VecGetArrayRead(a->history->committed, &hist));
-  for (PetscInt i = first; i < first + count; ++i) {
-    const PetscInt     j   = i - first; /* the cell's row in out */
+  for (PetscInt i = 0; i < disc->ncell; ++i) {
     const IndMaterial *m   = &a->mats->mat[a->mats->cell_material[i]];
     PetscReal          vol = 0, vol0 = 0, savg[6] = {0}, eavg[6] = {0}, pavg = 0, xavg = 0, yavg = 0, cavg = 0;
     GatherCell(a, i, u, xn);
@@ -355,13 +352,13 @@ PetscErrorCode IndAssemblyCellAverages(IndAssembly a, Vec Uloc, PetscInt first, 
       cavg -= w0 * (st->eps_p[0] + st->eps_p[1] + st->eps_p[2]);
     }
     for (int k = 0; k < 6; ++k) {
-      out->stress[6 * j + k] = savg[k] / vol;
-      out->strain[6 * j + k] = eavg[k] / vol;
+      out->stress[6 * i + k] = savg[k] / vol;
+      out->strain[6 * i + k] = eavg[k] / vol;
     }
-    out->plastic[j]     = pavg / vol0;
-    out->back_stress[j] = xavg / vol0;
-    out->yielding[j]    = yavg / vol0;
-    if (out->compaction) out->compaction[j] = cavg / vol0;
+    out->plastic[i]     = pavg / vol0;
+    out->back_stress[i] = xavg / vol0;
+    out->yielding[i]    = yavg / vol0;
+    if (out->compaction) out->compaction[i] = cavg / vol0;
   }
   PetscCall(VecRestoreArrayRead(a->history->committed, &hist));
   PetscCall(VecRestoreArrayRead(a->Xloc, &xn));
