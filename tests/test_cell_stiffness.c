@@ -56,6 +56,28 @@ static PetscReal Compare(const IndKinematics *kin, const IndMaterial *m, PetscIn
   return dmax / kmax;
 }
 
+/* Max |K1 - K2| / max |K1| between the finite-strain stiffness of an elastic point that never yielded (M by its 3 x 3
+   block and diagonal) and of the same point with a plastic strain eps in its history: eps = 1e-300 leaves the stress
+   as it is and takes the general tangent, which must agree; eps = 1e-3 turns the stress and must not. */
+static PetscReal CompareCoaxial(const IndMaterial *m, PetscInt nb, PetscInt nt, PetscReal eps, unsigned long long *seed)
+{
+  const IndKinematics *kin = IndKinematicsFinite();
+  const PetscInt       nd  = 3 * nb;
+  PetscReal            K1[MAXND * MAXND] = {0}, K2[MAXND * MAXND] = {0}, B[6 * MAXND], DB[6 * MAXND];
+  PetscReal            G[3 * MAXNB], u[MAXND], old[IND_HISTORY_NVAL] = {0}, kmax = 0, dmax = 0;
+
+  Gradients(seed, nb, PETSC_FALSE, G);
+  for (PetscInt k = 0; k < nd; ++k) u[k] = 1e-3 * (2.0 * Rand(seed) - 1.0);
+  (void)kin->stiffness(m, IND_TANGENT_CONSISTENT, nb, nt, G, NULL, u, old, 0.7, B, DB, K1);
+  old[0] = eps;
+  (void)kin->stiffness(m, IND_TANGENT_CONSISTENT, nb, nt, G, NULL, u, old, 0.7, B, DB, K2);
+  for (PetscInt k = 0; k < nd * nd; ++k) {
+    kmax = PetscMax(kmax, PetscAbsReal(K2[k]));
+    dmax = PetscMax(dmax, PetscAbsReal(K1[k] - K2[k]));
+  }
+  return dmax / kmax;
+}
+
 int main(int argc, char **argv)
 {
   unsigned long long seed = 20261128ULL;
@@ -82,6 +104,18 @@ int main(int argc, char **argv)
       Report(f ? "finite, control: gradients not summing to zero differ (1 / difference)"
                : "small, control: gradients not summing to zero differ (1 / difference)", 1.0 / d, 1e3);
     }
+  }
+  printf("finite strain: the stiffness of a point that never yielded against the general tangent's\n");
+  for (PetscInt nb = 4; nb <= 8; nb += 4) {
+    char      what[128];
+    PetscReal worst = 0, control = PETSC_MAX_REAL;
+    for (int t = 0; t < 50; ++t) worst = PetscMax(worst, CompareCoaxial(&m, nb, nb == 4 ? 4 : 7, 1e-300, &seed));
+    for (int t = 0; t < 10; ++t) control = PetscMin(control, CompareCoaxial(&m, nb, nb == 4 ? 4 : 7, 1e-3, &seed));
+    PetscCall(PetscSNPrintf(what, sizeof(what), "finite, %" PetscInt_FMT " nodes, never yielded", nb));
+    Report(what, worst, 1e-13);
+    PetscCall(PetscSNPrintf(what, sizeof(what), "finite, %" PetscInt_FMT " nodes, control: a plastic strain 1e-3 "
+                                                "(1e-4 / difference)", nb));
+    Report(what, 1e-4 / control, 1.0);
   }
   PetscCall(PetscFinalize());
   return failures ? 1 : 0;

@@ -281,6 +281,18 @@ static void TestDerivatives(unsigned long long *seed)
   Report("DS = dS/dE_GL against central differences (plastic, coincident)", worst_t, 1e-6);
 }
 
+/* A random deformation with distinct stretches, two equal (t % 3 == 1) or three equal (t % 3 == 2). */
+static void RandomStretch(unsigned long long *seed, int t, PetscReal F[9])
+{
+  PetscReal R[9], Q[9], s[3];
+  for (int k = 0; k < 3; ++k) s[k] = PetscExpReal(0.6 * Rand(seed) - 0.3);
+  if (t % 3 == 1) s[1] = s[0];
+  if (t % 3 == 2) s[0] = s[1] = s[2];
+  RandomRotation(seed, R);
+  RandomRotation(seed, Q);
+  Deformation(R, Q, s, F);
+}
+
 /* An elastic (isotropic) tangent taken as the same in every basis gives the DS of its full rotation into
    the eigenbasis of C, at distinct and coincident eigenvalues. */
 static void TestIsotropicTangent(unsigned long long *seed)
@@ -288,16 +300,11 @@ static void TestIsotropicTangent(unsigned long long *seed)
   const IndPlasticParams law = Law(VOCE, 0.3, 0, 2.0, PETSC_TRUE);
   PetscReal              worst = 0;
   for (int t = 0; t < 60; ++t) {
-    PetscReal       R[9], Q[9], F[9], s[3], E[6], T[6], D[36], DSr[36], DSi[36], d[36], dp;
+    PetscReal       F[9], E[6], T[6], D[36], DSr[36], DSi[36], d[36], dp;
     IndLogStrain    ls;
     IndPlasticState old, st;
     memset(&old, 0, sizeof(old));
-    for (int k = 0; k < 3; ++k) s[k] = PetscExpReal(0.6 * Rand(seed) - 0.3);
-    if (t % 3 == 1) s[1] = s[0];
-    if (t % 3 == 2) s[0] = s[1] = s[2];
-    RandomRotation(seed, R);
-    RandomRotation(seed, Q);
-    Deformation(R, Q, s, F);
+    RandomStretch(seed, t, F);
     (void)FromF(F, &ls, E);
     (void)IndPlasticUpdate(&law, E, &old, &st, T, D, &dp);
     IndLogStrainTangent(&ls, T, D, PETSC_FALSE, DSr);
@@ -306,6 +313,77 @@ static void TestIsotropicTangent(unsigned long long *seed)
     worst = PetscMax(worst, MaxAbs(d, 36) / MaxAbs(DSr, 36));
   }
   Report("DS of an elastic tangent without its rotation = with it", worst, 1e-13);
+}
+
+/* A point that never yielded: its stress is coaxial with C and the tangent in the eigenbasis by its 3 x 3 block and
+   diagonal (IndLogStrainTangentCoaxial) is the full one, at distinct and coincident eigenvalues. A plastic strain in
+   the history turns T away from C's axes, and the two must then differ: the comparison can fail. */
+static void TestCoaxialTangent(unsigned long long *seed)
+{
+  const IndPlasticParams law = Law(VOCE, 0.3, 0, 2.0, PETSC_TRUE);
+  PetscReal              worst = 0, control = PETSC_MAX_REAL;
+  for (int t = 0; t < 120; ++t) {
+    const PetscBool history = (PetscBool)(t >= 60);
+    PetscReal       F[9], E[6], T[6], Tt[9], D[36], Mc[36], Mg[36], d[36], dp;
+    IndLogStrain    ls;
+    IndPlasticState old, st;
+    memset(&old, 0, sizeof(old));
+    if (history)
+      for (int k = 0; k < 6; ++k) old.eps_p[k] = 0.02 * Rand(seed);
+    RandomStretch(seed, t, F);
+    (void)FromF(F, &ls, E);
+    (void)IndPlasticUpdate(&law, E, &old, &st, T, D, &dp);
+    IndLogStrainIntoBasis(&ls, T, Tt);
+    IndLogStrainTangentEigen(&ls, Tt, D, PETSC_TRUE, Mg);
+    IndLogStrainTangentCoaxial(&ls, Tt, D, Mc);
+    for (int k = 0; k < 36; ++k) d[k] = Mc[k] - Mg[k];
+    if (history) control = PetscMin(control, MaxAbs(d, 36) / MaxAbs(Mg, 36));
+    else worst = PetscMax(worst, MaxAbs(d, 36) / MaxAbs(Mg, 36));
+  }
+  Report("M of a point that never yielded by its block and diagonal = the full M", worst, 1e-13);
+  Report("control: with a plastic history the two differ (1e-5 / smallest difference)", 1e-5 / control, 1.0);
+}
+
+/* A plastic point's tangent turned into the eigenbasis by its parts (the isotropic part as it is, the flow direction
+   rotated as a tensor) is the 6 x 6 D turned whole, at distinct and coincident eigenvalues, from a virgin and from a
+   plastic history. Leaving n unrotated must differ: the comparison can fail. */
+static void TestTangentByParts(unsigned long long *seed)
+{
+  const IndPlasticParams law = Law(VOCE, 0.3, 0, 2.0, PETSC_FALSE);
+  PetscReal              worst = 0, control = PETSC_MAX_REAL;
+  PetscInt               plastic = 0;
+  for (int t = 0; t < 120; ++t) {
+    PetscReal         F[9], E[6], T[6], Tt[9], D[36], Dt[36], Du[36], Mw[36], Mp[36], Mu[36], d[36];
+    PetscReal         n[6], nt[9], dp;
+    IndLogStrain      ls;
+    IndPlasticState   old, st;
+    IndPlasticTangent parts;
+    memset(&old, 0, sizeof(old));
+    if (t % 2)
+      for (int k = 0; k < 6; ++k) old.eps_p[k] = 0.02 * Rand(seed);
+    RandomStretch(seed, t, F);
+    (void)FromF(F, &ls, E);
+    (void)IndPlasticUpdate(&law, E, &old, &st, T, D, &dp);
+    (void)IndPlasticUpdateParts(&law, E, &old, &st, T, &parts, &dp);
+    if (dp > 0) plastic++;
+    IndLogStrainIntoBasis(&ls, T, Tt);
+    IndLogStrainIntoBasis(&ls, parts.n, nt);
+    n[0] = nt[0], n[1] = nt[4], n[2] = nt[8], n[3] = nt[1], n[4] = nt[5], n[5] = nt[2];
+    IndPlasticTangentMatrix(&parts, n, Dt);
+    IndPlasticTangentMatrix(&parts, parts.n, Du);
+    IndLogStrainTangentEigen(&ls, Tt, D, PETSC_FALSE, Mw);
+    IndLogStrainTangentEigen(&ls, Tt, Dt, PETSC_TRUE, Mp);
+    IndLogStrainTangentEigen(&ls, Tt, Du, PETSC_TRUE, Mu);
+    for (int k = 0; k < 36; ++k) d[k] = Mp[k] - Mw[k];
+    worst = PetscMax(worst, MaxAbs(d, 36) / MaxAbs(Mw, 36));
+    if (dp > 0 && t % 3 == 0) {
+      for (int k = 0; k < 36; ++k) d[k] = Mu[k] - Mw[k];
+      control = PetscMin(control, MaxAbs(d, 36) / MaxAbs(Mw, 36));
+    }
+  }
+  Report("M from the tangent's parts, n rotated = from D rotated whole", worst, 1e-13);
+  Report("... of which plastic points (1 / count)", 1.0 / PetscMax(plastic, 1), 1.0 / 60);
+  Report("control: n left unrotated differs (1e-6 / smallest difference)", 1e-6 / control, 1.0);
 }
 
 /* A rotation Q applied after F leaves E, T and the history unchanged and rotates the Cauchy stress. */
@@ -481,6 +559,8 @@ int main(int argc, char **argv)
   TestHencky(&seed);
   TestDerivatives(&seed);
   TestIsotropicTangent(&seed);
+  TestCoaxialTangent(&seed);
+  TestTangentByParts(&seed);
   TestObjectivity(&seed);
   TestUniaxial();
   TestSimpleShear();

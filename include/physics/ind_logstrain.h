@@ -51,9 +51,14 @@ void IndLogStrainIntoBasis(const IndLogStrain *ls, const PetscReal A[6], PetscRe
 /* The tangent of IndLogStrainTangent in the eigenbasis of C: M = dS~/dE~_GL (6x6, engineering shears in,
    tensor components out, both components in that basis), from T~ = N^T T N (3x3). A finite-strain
    stiffness B^T DS B equals B~^T M B~ with B~ the strain columns in that basis, which spares rotating the
-   6x6 tangent back. */
+   6x6 tangent back. isotropic: DT is not rotated, being the same in every basis (elastic) or given in the
+   eigenbasis already. */
 void IndLogStrainTangentEigen(const IndLogStrain *ls, const PetscReal Tt[9], const PetscReal DT[36],
                               PetscBool isotropic, PetscReal M[36]);
+/* The same when T is coaxial with C (T~ diagonal: a point that never yielded, whose stress is an isotropic function
+   of E) and DT is isotropic: M is then a 3 x 3 block on the normal pairs and a diagonal on the shear pairs, zero
+   elsewhere, and T~'s off-diagonal (round-off) is not read. */
+void IndLogStrainTangentCoaxial(const IndLogStrain *ls, const PetscReal Tt[9], const PetscReal DT[36], PetscReal M[36]);
 /* Cauchy stress sigma = F S F^T / J (tensor components). */
 void IndLogStrainCauchy(const PetscReal F[9], PetscReal J, const PetscReal S[6], PetscReal sigma[6]);
 /* The Eulerian (spatial) Hencky strain (1/2) ln(F F^T) = R E R^T, engineering shears. */

@@ -15,4 +15,7 @@ PetscErrorCode IndMatInsertDestroy(IndMatInsert *insert);
 /* Zeroes J and opens its arrays; then IndMatInsertCell for any cells; End closes and assembles. */
 PetscErrorCode IndMatInsertBegin(IndMatInsert insert, Mat J);
 PetscErrorCode IndMatInsertCell(IndMatInsert insert, PetscInt cell, const PetscReal *Ke);
+/* Asks the memory for the matrix entries IndMatInsertCell will add cell's matrix to, so that their loads overlap
+   the arithmetic of the cell matrix instead of waiting at the insertion; between Begin and End. */
+void IndMatInsertPrefetch(IndMatInsert insert, PetscInt cell);
 PetscErrorCode IndMatInsertEnd(IndMatInsert insert, Mat J);

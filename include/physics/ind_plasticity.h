@@ -76,3 +76,19 @@ PetscErrorCode IndPlasticParamsCheck(const IndPlasticParams *m, const char prefi
    (e.g. SNESSetFunctionDomainError) and cut it. */
 IndPlasticStatus IndPlasticUpdate(const IndPlasticParams *m, const PetscReal eps[6], const IndPlasticState *old,
   IndPlasticState *new_state, PetscReal sigma[6], PetscReal D[36], PetscReal *dp_out);
+
+/* The consistent tangent by its parts, D = kappa J + 2 mu theta (I - J/3) - 2 mu thetabar n n^T (n the unit flow
+   direction, tensor components; theta = 1, thetabar = 0 and n = 0 at an elastic step): an isotropic tensor and a
+   rank-one term. A caller that needs D in another basis rotates n alone, not the 6 x 6 D. */
+typedef struct {
+  PetscReal kappa, mu, theta, thetabar;
+  PetscReal n[6];
+} IndPlasticTangent;
+
+/* IndPlasticUpdate with the tangent by its parts (t may be NULL; NaN where D would be). */
+IndPlasticStatus IndPlasticUpdateParts(const IndPlasticParams *m, const PetscReal eps[6], const IndPlasticState *old,
+  IndPlasticState *new_state, PetscReal sigma[6], IndPlasticTangent *t, PetscReal *dp_out);
+/* The parts' D with the flow direction n given in the basis wanted (t->n itself, or rotated). */
+void IndPlasticTangentMatrix(const IndPlasticTangent *t, const PetscReal n[6], PetscReal D[36]);
+/* The parts of the elastic tangent. */
+void IndPlasticTangentElastic(PetscReal kappa, PetscReal mu, IndPlasticTangent *t);

@@ -210,6 +210,10 @@ PetscErrorCode IndAssemblyJacobian(IndAssembly a, Vec Uloc, Mat J)
   for (PetscInt i = 0; i < disc->ncell; ++i) {
     const IndMaterial *m = &a->mats->mat[a->mats->cell_material[i]];
 
+    /* its entries arrive while the cell's matrix is computed: a finite-strain one's arithmetic covers the loads
+       (1-rank Jacobians of plastic steps 0.91 times as long); a small-strain P1 cell's is too short, and with the
+       prefetch its Jacobian took 2 to 7% longer (doc/performance.md) */
+    if (ins && a->kin->large) IndMatInsertPrefetch(ins, i);
     GatherCell(a, i, u, xn);
     PetscCall(PetscArrayzero(a->Ke, nd * nd));
     for (PetscInt q = 0; q < nq; ++q) {

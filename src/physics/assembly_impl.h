@@ -74,6 +74,33 @@ static inline IndPlasticStatus MaterialResponse(const IndMaterial *m, IndTangent
   return status;
 }
 
+/* MaterialResponse without a trial history, its tangent by its parts (IndPlasticTangent) where the model's has that
+   form: elastic, J2 plasticity, and every model under -plastic_tangent elastic (*by_parts true, D not written). The
+   densifying model's consistent tangent comes whole in D (*by_parts false). */
+static inline IndPlasticStatus MaterialResponseParts(const IndMaterial *m, IndTangent tangent, const PetscReal eps[6],
+                                                     const PetscReal *old, PetscReal sigma[6], IndPlasticTangent *t,
+                                                     PetscBool *by_parts, PetscReal *D, PetscReal *dp)
+{
+  const IndPlasticState *o = (const IndPlasticState *)old;
+  IndPlasticState        scratch;
+  IndPlasticStatus       status;
+
+  *by_parts = (PetscBool)(m->model != IND_MODEL_DENSIFYING || tangent == IND_TANGENT_ELASTIC);
+  if (!*by_parts) return MaterialResponse(m, tangent, eps, old, NULL, sigma, D, dp);
+  *dp = 0.0;
+  if (m->model == IND_MODEL_ELASTIC) {
+    IndElasticStress(m->kappa, m->mu, eps, sigma);
+    IndPlasticTangentElastic(m->kappa, m->mu, t);
+    return IND_PLASTIC_OK;
+  }
+  if (m->model == IND_MODEL_DENSIFYING) status = IndDensifyingUpdate(&m->plastic, eps, o, &scratch, sigma, NULL, dp);
+  else
+    status = IndPlasticUpdateParts(&m->plastic, eps, o, &scratch, sigma, tangent == IND_TANGENT_CONSISTENT ? t : NULL,
+                                   dp);
+  if (tangent == IND_TANGENT_ELASTIC) IndPlasticTangentElastic(m->kappa, m->mu, t);
+  return status;
+}
+
 /* The displacement gradient H = sum_a u_a (x) G_a and F = I + H, row-major (finite strain, and the
    check for inverted cells). On an axisymmetric section (hoop not NULL) y is the hoop direction:
    H_yy = u_r / r = sum_a hoop_a u_a,x. */

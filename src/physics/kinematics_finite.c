@@ -53,7 +53,8 @@ static IndPlasticStatus Stress(const IndMaterial *m, IndTangent tangent, PetscIn
    w M B~ are stored by rows (Bt[r nd + k] = B~[r][k]), so that the loops over columns are contiguous. */
 static inline void AddFiniteStiffness(PetscInt nb, PetscInt nt, const PetscReal *G, const PetscReal *hoop,
                                       const PetscReal F[9], const PetscReal N[9], const PetscReal S[6],
-                                      const PetscReal M[36], PetscReal w, PetscReal *Bt, PetscReal *DBt, PetscReal *Ke)
+                                      const PetscReal M[36], PetscBool coaxial, PetscReal w, PetscReal *Bt,
+                                      PetscReal *DBt, PetscReal *Ke)
 {
   const PetscInt nd = 3 * nb, ne = 3 * nt;
   PetscReal      Ft[9];
@@ -85,14 +86,27 @@ static inline void AddFiniteStiffness(PetscInt nb, PetscInt nt, const PetscReal 
       Bt[5 * nd + k] += Ft[3] * n2 + Ft[5] * n0;
     }
   }
-  /* w M B~, row by row: the loops over the columns k are independent and contiguous, so they vectorise */
-  for (int r = 0; r < 6; ++r) {
-    const PetscReal *Mr = M + 6 * r;
-    const PetscReal  m0 = w * Mr[0], m1 = w * Mr[1], m2 = w * Mr[2], m3 = w * Mr[3], m4 = w * Mr[4], m5 = w * Mr[5];
-    PetscReal       *db = DBt + r * nd;
-    for (PetscInt k = 0; k < ne; ++k)
-      db[k] = m0 * Bt[k] + m1 * Bt[nd + k] + m2 * Bt[2 * nd + k] + m3 * Bt[3 * nd + k] + m4 * Bt[4 * nd + k] +
-              m5 * Bt[5 * nd + k];
+  /* w M B~, row by row: the loops over the columns k are independent and contiguous, so they vectorise. A coaxial
+     M (IndLogStrainTangentCoaxial) has a 3 x 3 block and a diagonal: a third of the products. */
+  if (coaxial) {
+    for (int r = 0; r < 3; ++r) {
+      const PetscReal m0 = w * M[6 * r], m1 = w * M[6 * r + 1], m2 = w * M[6 * r + 2];
+      PetscReal      *db = DBt + r * nd;
+      for (PetscInt k = 0; k < ne; ++k) db[k] = m0 * Bt[k] + m1 * Bt[nd + k] + m2 * Bt[2 * nd + k];
+    }
+    for (int r = 3; r < 6; ++r) {
+      const PetscReal m = w * M[7 * r];
+      for (PetscInt k = 0; k < ne; ++k) DBt[r * nd + k] = m * Bt[r * nd + k];
+    }
+  } else {
+    for (int r = 0; r < 6; ++r) {
+      const PetscReal *Mr = M + 6 * r;
+      const PetscReal  m0 = w * Mr[0], m1 = w * Mr[1], m2 = w * Mr[2], m3 = w * Mr[3], m4 = w * Mr[4], m5 = w * Mr[5];
+      PetscReal       *db = DBt + r * nd;
+      for (PetscInt k = 0; k < ne; ++k)
+        db[k] = m0 * Bt[k] + m1 * Bt[nd + k] + m2 * Bt[2 * nd + k] + m3 * Bt[3 * nd + k] + m4 * Bt[4 * nd + k] +
+                m5 * Bt[5 * nd + k];
+    }
   }
   /* the upper triangle only: the cell loop mirrors it */
   for (PetscInt j = 0; j < ne; ++j) {
@@ -121,26 +135,53 @@ static inline void AddFiniteStiffness(PetscInt nb, PetscInt nt, const PetscReal 
   }
 }
 
+/* No plastic strain in the committed state: the elastic response is then an isotropic function of E itself. */
+static inline PetscBool NeverYielded(const PetscReal *old)
+{
+  const PetscReal *e = ((const IndPlasticState *)old)->eps_p;
+  return (PetscBool)(e[0] == 0.0 && e[1] == 0.0 && e[2] == 0.0 && e[3] == 0.0 && e[4] == 0.0 && e[5] == 0.0);
+}
+
 static IndPlasticStatus Stiffness(const IndMaterial *m, IndTangent tangent, PetscInt nb, PetscInt nt,
                                   const PetscReal *G, const PetscReal *hoop, const PetscReal *ue, const PetscReal *old,
                                   PetscReal w, PetscReal *B, PetscReal *DB, PetscReal *Ke)
 {
-  IndLogStrain     ls;
-  PetscReal        H[9], F[9], E[6], T[6], Tt[9], S[6], D[36], M[36], dp;
-  IndPlasticStatus status;
+  IndLogStrain      ls;
+  IndPlasticTangent parts;
+  PetscReal         H[9], F[9], E[6], T[6], Tt[9], S[6], D[36], M[36], dp;
+  PetscBool         by_parts, coaxial;
+  IndPlasticStatus  status;
 
   IndDeformationGradient(nb, G, hoop, ue, H, F);
   if (IndLogStrainFromGradient(H, &ls, E)) return IND_PLASTIC_NOT_CONVERGED;
-  status = MaterialResponse(m, tangent, E, old, NULL, T, D, &dp);
+  status = MaterialResponseParts(m, tangent, E, old, T, &parts, &by_parts, D, &dp);
   if (status != IND_PLASTIC_OK) return status;
   IndLogStrainIntoBasis(&ls, T, Tt);
   IndLogStrainStressFromBasis(&ls, Tt, S);
-  /* a point that did not yield has the elastic, isotropic tangent (so has every point under -tangent elastic) */
-  IndLogStrainTangentEigen(&ls, Tt, D, (PetscBool)(dp == 0.0 || tangent == IND_TANGENT_ELASTIC), M);
+  /* The tangent in the eigenbasis of C: its isotropic part is the same in every basis, its rank-one part turns with
+     the flow direction alone (a 3 x 3 rotation where the whole 6 x 6 would cost 12 times as many products) */
+  if (by_parts) {
+    PetscReal n[6] = {0, 0, 0, 0, 0, 0};
+    if (parts.thetabar != 0.0) {
+      PetscReal nt[9];
+      IndLogStrainIntoBasis(&ls, parts.n, nt);
+      n[0] = nt[0], n[1] = nt[4], n[2] = nt[8], n[3] = nt[1], n[4] = nt[5], n[5] = nt[2];
+    }
+    IndPlasticTangentMatrix(&parts, n, D);
+  }
+  /* A point that did not yield has the elastic, isotropic tangent. If it never yielded either, its stress is an
+     isotropic function of E, coaxial with C: M is then a block and a diagonal. */
+  coaxial = (PetscBool)(dp == 0.0 && NeverYielded(old));
+  if (coaxial) IndLogStrainTangentCoaxial(&ls, Tt, D, M);
+  else IndLogStrainTangentEigen(&ls, Tt, D, (PetscBool)(by_parts || dp == 0.0 || tangent == IND_TANGENT_ELASTIC), M);
   /* the linear tetrahedron and hexahedron by constant sizes: their loops are unrolled */
-  if (nb == 4 && nt == 4) AddFiniteStiffness(4, 4, G, hoop, F, ls.N, S, M, w, B, DB, Ke);
-  else if (nb == 8 && nt == 7) AddFiniteStiffness(8, 7, G, hoop, F, ls.N, S, M, w, B, DB, Ke);
-  else AddFiniteStiffness(nb, nt, G, hoop, F, ls.N, S, M, w, B, DB, Ke);
+  if (nb == 4 && nt == 4) {
+    if (coaxial) AddFiniteStiffness(4, 4, G, hoop, F, ls.N, S, M, PETSC_TRUE, w, B, DB, Ke);
+    else AddFiniteStiffness(4, 4, G, hoop, F, ls.N, S, M, PETSC_FALSE, w, B, DB, Ke);
+  } else if (nb == 8 && nt == 7) {
+    if (coaxial) AddFiniteStiffness(8, 7, G, hoop, F, ls.N, S, M, PETSC_TRUE, w, B, DB, Ke);
+    else AddFiniteStiffness(8, 7, G, hoop, F, ls.N, S, M, PETSC_FALSE, w, B, DB, Ke);
+  } else AddFiniteStiffness(nb, nt, G, hoop, F, ls.N, S, M, coaxial, w, B, DB, Ke);
   return status;
 }
 

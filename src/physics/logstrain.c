@@ -344,6 +344,24 @@ void IndLogStrainTangentEigen(const IndLogStrain *ls, const PetscReal Tt[9], con
     }
 }
 
+void IndLogStrainTangentCoaxial(const IndLogStrain *ls, const PetscReal Tt[9], const PetscReal DT[36], PetscReal M[36])
+{
+  const PetscReal *f1 = ls->f1;
+
+  /* IndLogStrainTangentEigen's entries with T~ diagonal and DT isotropic: its brackets in T~'s off-diagonal vanish,
+     and so do DT's normal-shear and shear-shear couplings */
+  for (int v = 0; v < 36; ++v) M[v] = 0.0;
+  for (int p = 0; p < 3; ++p) {
+    for (int q = p; q < 3; ++q) M[6 * p + q] = M[6 * q + p] = 4.0 * f1[4 * p] * DT[6 * p + q] * f1[4 * q];
+    M[7 * p] += 8.0 * F2(ls, p, p, p) * Tt[4 * p];
+  }
+  for (int v = 3; v < 6; ++v) {
+    const int       a = va[v], b = vb[v];
+    const PetscReal f = f1[3 * a + b];
+    M[7 * v] = 4.0 * f * DT[7 * v] * f + 2.0 * (F2Any(ls, b, b, a) * Tt[4 * b] + F2Any(ls, a, a, b) * Tt[4 * a]);
+  }
+}
+
 void IndLogStrainTangent(const IndLogStrain *ls, const PetscReal T[6], const PetscReal DT[36], PetscBool isotropic,
                          PetscReal DS[36])
 {

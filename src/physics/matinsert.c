@@ -301,6 +301,31 @@ static inline void AddBlock(IndMatInsert m, PetscInt lr, PetscInt p, const Petsc
   }
 }
 
+void IndMatInsertPrefetch(IndMatInsert m, PetscInt i)
+{
+#if defined(__GNUC__)
+  const PetscInt  nb = m->nb;
+  const PetscInt *g  = m->gnode + i * nb;
+  const int16_t  *pos = m->pos + i * nb * nb;
+
+  for (PetscInt a = 0; a < nb; ++a) {
+    const PetscInt lr = 3 * g[a] - m->rstart;
+    for (PetscInt b = 0; b < nb; ++b) {
+      const PetscInt p = pos[a * nb + b];
+      if (p == REMOTE) continue;
+      {
+        const PetscScalar *v  = p > 0 ? m->ad : m->ao;
+        const PetscInt    *ia = p > 0 ? m->iad : m->iao, o = (p > 0 ? p : -p) - 1;
+        for (int k = 0; k < 3; ++k) __builtin_prefetch(v + ia[lr + k] + o, 1, 3);
+      }
+    }
+  }
+#else
+  (void)m;
+  (void)i;
+#endif
+}
+
 PetscErrorCode IndMatInsertCell(IndMatInsert m, PetscInt i, const PetscReal *Ke)
 {
   const PetscInt  nb = m->nb, nd = 3 * nb;

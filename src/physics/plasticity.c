@@ -70,8 +70,41 @@ static IndPlasticStatus SolveReturn(const IndPlasticParams *m, PetscReal qE, Pet
   return IND_PLASTIC_NOT_CONVERGED;
 }
 
+void IndPlasticTangentElastic(PetscReal kappa, PetscReal mu, IndPlasticTangent *t)
+{
+  t->kappa    = kappa;
+  t->mu       = mu;
+  t->theta    = 1.0;
+  t->thetabar = 0.0;
+  for (int i = 0; i < 6; ++i) t->n[i] = 0.0;
+}
+
+void IndPlasticTangentMatrix(const IndPlasticTangent *t, const PetscReal n[6], PetscReal D[36])
+{
+  const PetscReal mu = t->mu, theta = t->theta, thetabar = t->thetabar;
+
+  /* I = diag(1,1,1,1/2,1/2,1/2) because the tangent acts on engineering shears */
+  for (int i = 0; i < 6; ++i)
+    for (int j = 0; j < 6; ++j) {
+      PetscReal v = -2.0 * mu * thetabar * n[i] * n[j];
+      if (i < 3 && j < 3) v += t->kappa - 2.0 * mu * theta / 3.0;
+      if (i == j) v += 2.0 * mu * theta * (i < 3 ? 1.0 : 0.5);
+      D[6 * i + j] = v;
+    }
+}
+
 IndPlasticStatus IndPlasticUpdate(const IndPlasticParams *m, const PetscReal eps[6], const IndPlasticState *old,
   IndPlasticState *new_state, PetscReal sigma[6], PetscReal D[36], PetscReal *dp_out)
+{
+  IndPlasticTangent      t;
+  const IndPlasticStatus status = IndPlasticUpdateParts(m, eps, old, new_state, sigma, D ? &t : NULL, dp_out);
+
+  if (D) IndPlasticTangentMatrix(&t, t.n, D);
+  return status;
+}
+
+IndPlasticStatus IndPlasticUpdateParts(const IndPlasticParams *m, const PetscReal eps[6], const IndPlasticState *old,
+  IndPlasticState *new_state, PetscReal sigma[6], IndPlasticTangent *t, PetscReal *dp_out)
 {
   const IndPlasticState o  = *old; /* new_state may alias old */
   const PetscReal       mu = m->mu, H = m->H, tr = eps[0] + eps[1] + eps[2], s32 = PetscSqrtReal(1.5);
@@ -92,8 +125,10 @@ IndPlasticStatus IndPlasticUpdate(const IndPlasticParams *m, const PetscReal eps
 
     if (SolveReturn(m, qE, o.p, &dp) != IND_PLASTIC_OK) {
       for (int i = 0; i < 6; ++i) sigma[i] = NAN;
-      if (D)
-        for (int i = 0; i < 36; ++i) D[i] = NAN;
+      if (t) {
+        t->kappa = t->mu = t->theta = t->thetabar = NAN;
+        for (int i = 0; i < 6; ++i) t->n[i] = NAN;
+      }
       if (dp_out) *dp_out = NAN;
       return IND_PLASTIC_NOT_CONVERGED;
     }
@@ -110,16 +145,12 @@ IndPlasticStatus IndPlasticUpdate(const IndPlasticParams *m, const PetscReal eps
     thetabar = 3.0 * mu / (3.0 * mu + H + IndPlasticdR(m, new_state->p)) - 3.0 * mu * dp / qE;
   }
   for (int i = 0; i < 6; ++i) sigma[i] = (i < 3 ? m->kappa * tr : 0.0) + 2.0 * mu * ee[i];
-  if (D) {
-    /* kappa J + 2 mu theta (I - J/3) - 2 mu thetabar n n^T, I = diag(1,1,1,1/2,1/2,1/2) because the
-       tangent acts on engineering shears. */
-    for (int i = 0; i < 6; ++i)
-      for (int j = 0; j < 6; ++j) {
-        PetscReal v = -2.0 * mu * thetabar * n[i] * n[j];
-        if (i < 3 && j < 3) v += m->kappa - 2.0 * mu * theta / 3.0;
-        if (i == j) v += 2.0 * mu * theta * (i < 3 ? 1.0 : 0.5);
-        D[6 * i + j] = v;
-      }
+  if (t) {
+    t->kappa    = m->kappa;
+    t->mu       = mu;
+    t->theta    = theta;
+    t->thetabar = thetabar;
+    for (int i = 0; i < 6; ++i) t->n[i] = n[i];
   }
   if (dp_out) *dp_out = dp;
   return IND_PLASTIC_OK;
