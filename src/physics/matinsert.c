@@ -288,13 +288,17 @@ PetscErrorCode IndMatInsertBegin(IndMatInsert m, Mat J)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* row k of the block at local rows lr.. and position p (as pos) in the open arrays */
+static inline PetscScalar *BlockRow(IndMatInsert m, PetscInt lr, PetscInt p, int k)
+{
+  return p > 0 ? m->ad + m->iad[lr + k] + p - 1 : m->ao + m->iao[lr + k] - p - 1;
+}
+
 /* the 3 x 3 block b (row stride ld) added at local rows lr.. and position p of the open arrays */
 static inline void AddBlock(IndMatInsert m, PetscInt lr, PetscInt p, const PetscScalar *b, PetscInt ld)
 {
-  PetscScalar    *v  = p > 0 ? m->ad : m->ao;
-  const PetscInt *ia = p > 0 ? m->iad : m->iao, o = (p > 0 ? p : -p) - 1;
   for (int k = 0; k < 3; ++k) {
-    PetscScalar *vr = v + ia[lr + k] + o;
+    PetscScalar *vr = BlockRow(m, lr, p, k);
     vr[0] += b[k * ld + 0];
     vr[1] += b[k * ld + 1];
     vr[2] += b[k * ld + 2];
@@ -313,11 +317,7 @@ void IndMatInsertPrefetch(IndMatInsert m, PetscInt i)
     for (PetscInt b = 0; b < nb; ++b) {
       const PetscInt p = pos[a * nb + b];
       if (p == REMOTE) continue;
-      {
-        const PetscScalar *v  = p > 0 ? m->ad : m->ao;
-        const PetscInt    *ia = p > 0 ? m->iad : m->iao, o = (p > 0 ? p : -p) - 1;
-        for (int k = 0; k < 3; ++k) __builtin_prefetch(v + ia[lr + k] + o, 1, 3);
-      }
+      for (int k = 0; k < 3; ++k) __builtin_prefetch(BlockRow(m, lr, p, k), 1, 3);
     }
   }
 #else
