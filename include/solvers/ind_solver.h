@@ -74,6 +74,9 @@ PetscBool      IndSolverLoadOutOfReach(IndSolver solver, PetscReal *load);
    before the first setup) set itself up again on its operator at its next use: after the operator
    changed in place while the preconditioner is reused, as on lagged Newton iterations. */
 PetscErrorCode IndSolverRefreshFineSmoother(KSP ksp);
+/* Frees the basis a GMRES ksp keeps at the size its longest solve grew it to (nothing for other Krylov methods); its
+   preconditioner is kept, and the next solve allocates what it needs. IndSolverSolve does it after each load step. */
+PetscErrorCode IndSolverReleaseKrylovBasis(KSP ksp);
 /* Makes every coarse operator and interpolation of a set-up multigrid (nothing for other preconditioners or before
    the first setup) multiply row by row, without PETSc's inode kernel, as the Jacobian does (-jac_inodes); with
    blocks, by their block rows (IndBlockMultInstall, -jac_block_products). With single (blocks only: a shell of
