@@ -17,6 +17,8 @@
    rate removed exactly; a NIGET file (mN, decimal commas, a text line) read with the segments of its header.
 3. Bad files: a missing file, a curve that never unloads, an unknown unit, a .niget without its header or with
    rows that do not rise: exit 1 and one line naming the file.
+4. The tip of test 1's area function as an indenter table (--tip-table): pi r^2 equals A(h) at every row, 3%
+   above the ideal Berkovich's at 727 nm; an area function that does not rise, or no --area: exit 1, one line.
 Prints ok or FAIL per check; exit 1 on any failure.
 """
 import argparse
@@ -142,6 +144,28 @@ def bad(args):
               and path in lines[0] and say in lines[0], f"{os.path.basename(path)}: one line, '{say}'")
 
 
+def tip_table(args):
+    xls = os.path.join(args.data, "FS_XP.xls")
+    path = os.path.join(args.workdir, "tip.csv")
+    run = measured(args, xls, "--area", "file", "--tip-table", path)
+    if not check(run.returncode == 0 and os.path.exists(path), "--tip-table: the file's tip written"):
+        return
+    rows = np.loadtxt(path, delimiter=",", comments="#")
+    r, h = rows[:, 0], rows[:, 1]
+    coef = [24.6954, 395.7700812, -16.13158277]  # the file's 'Area Coefficient' 1 to 3
+    area = sum(c * h ** (2.0 / 2 ** k) for k, c in enumerate(coef))
+    err = np.max(np.abs(np.pi * r[1:] ** 2 / area[1:] - 1))
+    check(r[0] == 0 and h[0] == 0 and np.all(np.diff(r) > 0) and np.all(np.diff(h) > 0) and abs(h[-1] - 3000) < 1e-6,
+          f"--tip-table: {len(r)} rows from 0,0 to 3000 nm, r and h rising")
+    check(err < 1e-9, f"--tip-table: pi r^2 is the area function at every row ({err:.1e})")
+    ratio = np.interp(727.0, h, np.pi * r ** 2) / (24.5 * 727.0 ** 2)
+    check(1.02 < ratio < 1.04, f"--tip-table: {ratio:.4f} times the ideal Berkovich's area at 727 nm")
+    for more, say in ((["--area=-1,0"], "does not rise"), ([], "needs --area")):
+        run = measured(args, xls, *more, "--tip-table", os.path.join(args.workdir, "bad_tip.csv"))
+        lines = run.stderr.strip().splitlines()
+        check(run.returncode == 1 and len(lines) == 1 and say in lines[0], f"--tip-table {' '.join(more)}: '{say}'")
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--indent-op", required=True)
@@ -152,6 +176,7 @@ def main():
     fused_silica(args)
     synthetic(args)
     bad(args)
+    tip_table(args)
     return 1 if failures else 0
 
 
