@@ -111,6 +111,28 @@ indent_script_test(axisymmetric_revolve ${INDENT_PYTHON} ${CMAKE_CURRENT_SOURCE_
   ${CMAKE_CURRENT_BINARY_DIR}/axisymmetric_revolve)
 set_tests_properties(axisymmetric_xdmf_index axisymmetric_xdmf_meshio axisymmetric_xdmf_paraview axisymmetric_plots
   axisymmetric_revolve PROPERTIES FIXTURES_REQUIRED axi_example)
+# A section's mesh turned into a 3D one (scripts/revolve-mesh.py): 3, 2 or 1 tetrahedra a triangle and segment,
+# conforming, positive, their volume sin(d) / d times the ring's (measured: equal to the 12 digits printed), the
+# boundary exactly the named surfaces, every node on a meridian of a section node; bad sections refused in one line.
+indent_script_test(axisymmetric_revolve_mesh ${INDENT_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_revolve_mesh.py
+  --workdir ${CMAKE_CURRENT_BINARY_DIR}/axi_revolve_mesh)
+# The section and the 3D model on that section's mesh revolved (12 segments of a quarter): inputs/fit-cone.opts's
+# case (a 70.3 degree cone with a 20 nm tip radius into a power-law film, friction 0.15, finite strain) to 20 nm
+# in 1.25 nm steps, on a coarse graded mesh (2.5 nm cells at the tip). The same nodes in (r, z), the same load path,
+# no step cut: measured 2.95% and 2.36% at 1.25 and 2.5 nm (two rings in contact), at most 0.90% from 5 nm; on
+# cells of 1.25 nm to 60 nm (doc/axisymmetric.md) at most 0.81% at every depth.
+set(TEST_LABEL validation)
+indent_script_test(axisymmetric_vs_revolved_3d_np2 ${INDENT_PYTHON}
+  ${CMAKE_CURRENT_SOURCE_DIR}/check_revolved_vs_section.py --indent $<TARGET_FILE:indent>
+  --mesh ${CMAKE_SOURCE_DIR}/inputs/axisymmetric_film.geo
+  --geo-parameters h_tip=2.5,h_far=400,r_fine=10,grow=0.1 --workdir ${CMAKE_CURRENT_BINARY_DIR}/axi_vs_revolved
+  --np 2 --mpiexec ${MPIEXEC_EXECUTABLE} --mpiexec-args= --segments 12 --tol 0.01 --from 5 --tol-all 0.035
+  --options "-film_model plastic -film_hardening power -film_young 70 -film_poisson 0.3 -film_yield 0.3
+  -film_hardening_exponent 0.2 -substrate_model plastic -substrate_hardening power -substrate_young 70
+  -substrate_poisson 0.3 -substrate_yield 0.3 -substrate_hardening_exponent 0.2 -bc_fixed bottom -indenter_type cone
+  -indenter_radius 20 -contact_friction 0.15 -load_depth 20 -load_steps 16 -load_unload 0 -output_fields 0 -quiet")
+set_tests_properties(axisymmetric_vs_revolved_3d_np2 PROPERTIES PROCESSORS 2 TIMEOUT 300)
+set(TEST_LABEL input)
 # scripts/export-curves.py on the section: the NIGET and Hysitron curves as for 3D runs, and the imprint revolved:
 # imprint.gsf the top profile at each pixel's radius (measured: 4e-7 nm of 14.5, float32), imprint.xyz its pixels.
 set(TEST_LABEL regression)
