@@ -15,7 +15,7 @@ a physical surface of the section becomes the volume of that name, a physical cu
 'left' (a half model ends on 'front' again). Exit status 2 on bad input.
 """
 import argparse
-import math
+import os
 import sys
 
 import numpy as np
@@ -200,7 +200,9 @@ def main(argv):
     except InputError as e:
         print(f"revolve-mesh: error: {args.section}: {e}", file=sys.stderr)
         return 2
-    meshio.write(args.out, out, file_format="gmsh22", binary=False)
+    tmp = args.out + ".tmp"  # an earlier OUT.msh stays whole until the new one is
+    meshio.write(tmp, out, file_format="gmsh22", binary=False)
+    os.replace(tmp, args.out)
     print(f"revolve-mesh: {args.out}: {len(out.points)} nodes ({naxis} on the axis, {nring} on each of "
           f"{args.segments + (0 if args.angle == 360 else 1)} meridians), {len(out.cells[0].data)} tetrahedra, "
           f"{args.angle:g} degrees in {args.segments} segments")
