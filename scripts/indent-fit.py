@@ -9,7 +9,9 @@
 --model OPTS: indent's options file for the curves that follow it (the indenter, the mesh, the fixed material
 options). --curve FILE: a measured curve (CSV, Hysitron .txt, Agilent .xls/.xlsx, as scripts/measured-curve.py
 reads them; --test, --format, --compliance and --drift given before it apply to it). Each curve is simulated to
-its own largest depth (-load_depth) with the model given before it; options after -- go to every run.
+its own largest depth (-load_depth) with the model given before it; options after -- go to every run. A 3D
+model whose indenter is of revolution (sphere, cone, flat, table) on inputs/' parametric meshes runs on the
+axisymmetric section of the same parameters (scripts/sectionmodel.py; OUT/models holds it); --3d keeps it 3D.
 --param NAME=OPTION[,OPTION...]:LOW:HIGH[:log]: a parameter, the options it sets (several for one material in
 two regions) and its bounds (':log': scaled by its logarithm). --imprint MAP: the residual imprint of the last
 --curve (an AFM height map, Gwyddion .gsf or x y z lines), a second term of the misfit: the model's top surface
@@ -43,6 +45,7 @@ import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import indentcurves  # noqa: E402
+import sectionmodel  # noqa: E402
 import runfiles  # noqa: E402
 from indentfit import dao, imprint, misfit, params as fparams, runs, stats  # noqa: E402
 
@@ -92,6 +95,8 @@ def parse_args(argv):
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--out", required=True, help="the fit's directory (its runs, report and plots)")
     ap.add_argument("--model", help="indent's options file for the curves after it")
+    ap.add_argument("--3d", dest="three_d", action="store_true",
+                    help="keep a 3D model whose indenter of revolution would run on the axisymmetric section")
     ap.add_argument("--format", default="auto", help="format of the curves after it: auto, csv, hysitron, agilent")
     ap.add_argument("--test", type=int, default=1, help="the test (sheet) of an Agilent file, for the curves after it")
     ap.add_argument("--compliance", type=float, default=0.0, help="frame compliance (nm/uN) of the curves after it")
@@ -157,6 +162,23 @@ def parse_args(argv):
     return args
 
 
+def section_model(args, c):
+    """The curve's model on the axisymmetric section where its indenter allows it (scripts/sectionmodel.py)."""
+    try:
+        tokens, why = sectionmodel.section_of(["-options_file", c.model])
+    except (sectionmodel.ModelError, ValueError) as e:
+        raise FitError(f"--model {c.model}: {e}") from None
+    if tokens is None:
+        return
+    os.makedirs(os.path.join(args.out, "models"), exist_ok=True)
+    path = os.path.join(args.out, "models", f"{c.index + 1}-{os.path.basename(c.model)}")
+    sectionmodel.write_options(path, tokens)
+    with open(path) as f:
+        c.model_text = f.read()
+    c.model_abs = os.path.abspath(path)
+    print(f"fit: curve {c.index + 1}: model {c.model}: {why}, written to {path} (--3d keeps the 3D model)")
+
+
 def load_curves(args):
     out = []
     for k, c in enumerate(args.curves):
@@ -172,6 +194,8 @@ def load_curves(args):
             c.model_text = f.read()
         c.model_abs = os.path.abspath(c.model)
         c.branches, c.index = b, k
+        if not args.three_d:
+            section_model(args, c)
         if c.imprint_opts is not None:
             o = c.imprint_opts
             try:

@@ -27,6 +27,9 @@ options, status (finished; interrupted: a checkpoint; incomplete: output without
 checkpoint; failed: started by --run, no output; not run; or summary.json's own status), then
 every scalar of summary.json.
 --dry-run: prints the commands (and the CSV) and writes nothing.
+A run whose indenter is of revolution (sphere, cone, flat, table) on one of inputs/' parametric 3D meshes runs on the
+axisymmetric section of the same parameters (scripts/sectionmodel.py: hundreds of times fewer unknowns), its options
+files written out in its recorded options; --3d keeps the 3D model.
 """
 import argparse
 import csv
@@ -40,6 +43,9 @@ import signal
 import subprocess
 import sys
 import time
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import sectionmodel  # noqa: E402
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 RECORD = "sweep-run.json"
@@ -84,7 +90,15 @@ def make_runs(spec):
         args = list(spec["base"])
         for k, v in combo:
             args += [f"-{k}", v]
-        runs.append({"name": run_name(combo), "vary": dict(combo), "args": args})
+        run = {"name": run_name(combo), "vary": dict(combo), "args": args}
+        if spec.get("section"):
+            try:
+                tokens, why = sectionmodel.section_of(args, spec["cwd"])
+            except (sectionmodel.ModelError, ValueError):
+                tokens = None  # options it cannot read are indent's to refuse, naming them, when the run starts
+            if tokens:
+                run.update(args=tokens, section=why)
+        runs.append(run)
     seen = {}
     for r in runs:
         if r["name"] in seen:
@@ -104,11 +118,13 @@ def load_spec(args):
     if args.vary or args.base:
         spec = {"base": [a for b in args.base for a in shlex.split(b)],
                 "vary": [list(parse_vary(v)) for v in args.vary],
-                "cwd": old["cwd"] if old else os.getcwd()}
+                "cwd": old["cwd"] if old else os.getcwd(),
+                "section": not args.three_d}
         if not spec["vary"]:
             raise SystemExit("--vary NAME=V1,V2 is needed (with --base)")
     elif old:
         spec = old
+        spec.setdefault("section", False)  # a sweep made before the sections ran its models as given
     else:
         raise SystemExit(f"no {path}: give the sweep with --base and --vary")
     spec["np"] = args.np if args.np is not None else (old or {}).get("np", 1)
@@ -413,6 +429,8 @@ def main():
     ap.add_argument("--collect", action="store_true", help="gather every run's summary.json into one CSV")
     ap.add_argument("--csv", help="--collect's file (default OUT/summary.csv)")
     ap.add_argument("--dry-run", action="store_true", help="print the commands, write and run nothing")
+    ap.add_argument("--3d", dest="three_d", action="store_true",
+                    help="keep a 3D model whose indenter of revolution would run on the axisymmetric section")
     args = ap.parse_args()
     if args.np is not None and args.np < 1:
         ap.error("--np must be >= 1")
@@ -422,6 +440,10 @@ def main():
 
     spec = load_spec(args)
     runs = make_runs(spec)
+    sections = sorted({r["section"] for r in runs if "section" in r})
+    for why in sections:
+        n = sum(r.get("section") == why for r in runs)
+        print(f"sweep: {n} of {len(runs)} runs: {why} (scripts/sectionmodel.py; --3d keeps the 3D model)")
     if not args.dry_run:
         generate(spec, runs, args.out)
     rc = 0

@@ -116,6 +116,11 @@ set_tests_properties(axisymmetric_xdmf_index axisymmetric_xdmf_meshio axisymmetr
 # boundary exactly the named surfaces, every node on a meridian of a section node; bad sections refused in one line.
 indent_script_test(axisymmetric_revolve_mesh ${INDENT_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_revolve_mesh.py
   --workdir ${CMAKE_CURRENT_BINARY_DIR}/axi_revolve_mesh)
+# A 3D model on the section where its indenter allows it (scripts/sectionmodel.py), the default of the inverse fit
+# and the sweep helper: the options converted (a cone, a sphere on the multilayer) or kept 3D with the reason (a
+# Berkovich, a scratch, off the axis, a mesh of its own), the converted model run, indent-fit's and sweep.py's --3d.
+indent_script_test(axisymmetric_section_model ${INDENT_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_section_model.py
+  --indent $<TARGET_FILE:indent> --workdir ${CMAKE_CURRENT_BINARY_DIR}/axi_section_model)
 # The section and the 3D model on that section's mesh revolved (12 segments of a quarter): inputs/fit-cone.opts's
 # case (a 70.3 degree cone with a 20 nm tip radius into a power-law film, friction 0.15, finite strain) to 20 nm
 # in 1.25 nm steps, on a coarse graded mesh (2.5 nm cells at the tip). The same nodes in (r, z), the same load path,
