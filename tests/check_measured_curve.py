@@ -33,15 +33,8 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 SCRIPT = os.path.join(HERE, "..", "scripts", "measured-curve.py")
 sys.path.insert(0, os.path.join(HERE, "..", "scripts"))
 import indentcurves  # noqa: E402
+from checklist import check, status  # noqa: E402  (this folder)
 
-failures = 0
-
-
-def check(ok, what):
-    global failures
-    print(("ok: " if ok else "FAIL: ") + what)
-    failures += 0 if ok else 1
-    return ok
 
 
 def measured(args, *more):
@@ -177,7 +170,7 @@ def main():
     synthetic(args)
     bad(args)
     tip_table(args)
-    return 1 if failures else 0
+    return status()
 
 
 if __name__ == "__main__":

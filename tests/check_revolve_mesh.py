@@ -25,16 +25,10 @@ import numpy as np
 
 import meshio
 
+from checklist import check, status  # this folder
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 SCRIPT = os.path.join(HERE, "..", "scripts", "revolve-mesh.py")
-failures = 0
-
-
-def check(ok, what):
-    global failures
-    print(("ok: " if ok else "FAIL: ") + what)
-    failures += 0 if ok else 1
-    return ok
 
 
 def section(path):
@@ -148,7 +142,7 @@ def main():
     for angle, segments in ((90, 4), (180, 5), (360, 7)):
         revolved(args, sec, angle, segments)
     bad(args)
-    return 1 if failures else 0
+    return status()
 
 
 if __name__ == "__main__":

@@ -23,16 +23,9 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(HERE)
 sys.path.insert(0, os.path.join(REPO, "scripts"))
 import sectionmodel  # noqa: E402
+from checklist import check, status  # noqa: E402  (this folder)
 
-failures = 0
 BERKOVICH = os.path.join("inputs", "berkovich.opts")
-
-
-def check(ok, what):
-    global failures
-    print(("ok: " if ok else "FAIL: ") + what)
-    failures += 0 if ok else 1
-    return ok
 
 
 def conversion():
@@ -127,7 +120,7 @@ def main():
     conversion()
     runs(args)
     sweep(args)
-    return 1 if failures else 0
+    return status()
 
 
 if __name__ == "__main__":
