@@ -440,7 +440,7 @@ PetscErrorCode IndContactCreate(IndMesh mesh, IndDisc disc, IndBC bc, IndContact
     PetscCall(IndContactSetCoupling(c, coupling)); /* and its defaults of rho and of the outer iterations */
   }
   PetscCall(IndOptionsReal("-contact_rho_scale", "rho = scale * mean stiffness diagonal of each contact node", "",
-    "1 newton, 0.3 fixed_point", c->rho_scale, &c->rho_scale, NULL));
+    "0.5 newton, 0.3 fixed_point", c->rho_scale, &c->rho_scale, NULL));
   PetscCall(IndOptionsReal("-contact_uzawa_rtol", "Outer loop: relative change of the reactions", "", NULL, c->rtol,
     &c->rtol, NULL));
   PetscCall(IndOptionsReal("-contact_penetration_rtol", "Outer loop: largest penetration relative to the largest depth",
