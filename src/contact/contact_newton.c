@@ -227,9 +227,8 @@ PetscErrorCode IndContactCreate_Newton(IndContact c)
   c->ops.after_outer          = AfterOuter;
   c->ops.residual_multipliers = PETSC_TRUE;
   /* rho sets which nodes are tried active and scales their rows, not the solution. Half the stiffness diagonal:
-     a surface node moves more under a force than its diagonal alone says, and with friction a larger rho lets
-     the error of one Newton step flip sticking nodes to sliding and back (doc/performance.md, "rho of the
-     contact rows"); a much smaller one leaves the rows too weak for the multigrid. */
+     with friction on a yielding film the full diagonal cost 2 to 9% more Newton iterations, a tenth of it left
+     the rows too weak for the multigrid (doc/performance.md, "rho of the contact rows"). */
   c->rho_scale = 0.5;
   c->max_outer = 20;
   PetscFunctionReturn(PETSC_SUCCESS);
