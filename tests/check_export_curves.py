@@ -22,16 +22,11 @@ import h5py
 import numpy as np
 from matplotlib import tri as mtri
 
+from checklist import check, failures, status  # this folder
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 EXPORT = os.path.join(HERE, "..", "scripts", "export-curves.py")
 SECONDS = 2.5  # not the default 10, so that the option is exercised
-failures = []
-
-
-def check(ok, what):
-    print(("ok   " if ok else "FAIL ") + what)
-    if not ok:
-        failures.append(what)
 
 
 def close(a, b, rtol, atol=0.0):
@@ -359,7 +354,7 @@ def main():
     check(bad.returncode == 2 and bad.stderr.startswith("export-curves: error:"),
           f"a missing run directory: exit {bad.returncode}, '{bad.stderr.strip()}'")
     print(f"{len(failures)} failed" if failures else "all checks passed")
-    return 1 if failures else 0
+    return status()
 
 
 if __name__ == "__main__":

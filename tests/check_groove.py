@@ -25,16 +25,10 @@ import tempfile
 import h5py
 import numpy as np
 
+from checklist import check, failures, status  # this folder
+
 PNG_MAGIC = b"\x89PNG\r\n\x1a\n"
 HEIGHT_TOL = 1e-9  # nm: the profile holds the vertices' own values, printed with 15 digits
-failures = []
-
-
-def check(ok, what):
-    print(("ok   " if ok else "FAIL ") + what)
-    if not ok:
-        failures.append(what)
-    return ok
 
 
 # ------------------------------------------------------------------------------------- the run
@@ -183,7 +177,7 @@ def main():
             check_printed(res.stdout, along, across, p)
         check_bad_input(args.script, tmp)
     print("all checks passed" if not failures else f"{len(failures)} check(s) failed")
-    return 1 if failures else 0
+    return status()
 
 
 if __name__ == "__main__":
