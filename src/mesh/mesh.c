@@ -364,8 +364,9 @@ static PetscErrorCode CheckMeshFile(MPI_Comm comm, const char file[])
         tail[n] = 0;
         while (n && (tail[n - 1] == '\n' || tail[n - 1] == '\r' || tail[n - 1] == ' ' || tail[n - 1] == 0))
           tail[--n] = 0;
-        last = strrchr(tail, '\n');
-        last = last ? last + 1 : tail;
+        /* a binary mesh has NULs before its last line: search the bytes, not the string */
+        last = tail + n;
+        while (last > tail && last[-1] != '\n') --last;
         if (strncmp(last, "$End", 4)) snprintf(why, sizeof(why),
           "is truncated or corrupt: it does not end with an $End... line");
       }
