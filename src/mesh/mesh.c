@@ -468,8 +468,8 @@ PetscErrorCode IndMeshCreate(MPI_Comm comm, IndMesh *out)
   PetscCall(PetscCalloc1(1, &mesh));
   PetscOptionsBegin(comm, NULL, IND_TITLE "Mesh (-mesh_*)", "Mesh");
   PetscCall(IndOptionsString("-mesh_file",
-    "gmsh mesh (.msh, format 2.2 or 4.1), or geometry (.geo, meshed by gmsh into <output_dir>/mesh.msh)", "file",
-    "the built-in box", file, file, sizeof(file), &has_file));
+    "gmsh mesh (.msh, format 2.2 or 4.1, ASCII or binary), or geometry (.geo, meshed by gmsh into "
+    "<output_dir>/mesh.msh)", "file", "the built-in box", file, file, sizeof(file), &has_file));
   PetscCall(IndOptionsString("-mesh_gmsh", "gmsh executable for a .geo -mesh_file", "file", NULL, gmsh, gmsh,
     sizeof(gmsh), NULL));
   PetscCall(IndOptionsStringArray("-mesh_geo_parameters",
