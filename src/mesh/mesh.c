@@ -380,21 +380,60 @@ static PetscErrorCode CheckMeshFile(MPI_Comm comm, const char file[])
 
 /* PETSc's reader, whose messages ("Insufficient data, read only 7105 < 30705 items") do not name the
    file. It fails on rank 0, where it reads. */
-static PetscErrorCode ReadMeshFile(MPI_Comm comm, const char file[], DM *dm)
+static PetscErrorCode ReadMeshFileAs(MPI_Comm comm, const char file[], PetscBool linear, DM *dm, char **why)
 {
   PetscErrorCode ierr;
-  char          *specific = NULL;
 
   PetscFunctionBeginUser;
+  *why = NULL;
   /* three coordinates also for a 2D mesh, the axisymmetric section (PlaceSectionInXZ) */
   PetscCall(PetscOptionsSetValue(NULL, "-dm_plex_gmsh_spacedim", "3"));
+  if (linear) PetscCall(PetscOptionsSetValue(NULL, "-dm_plex_gmsh_highorder", "0"));
   PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
   ierr = DMPlexCreateFromFile(comm, file, "indent", PETSC_TRUE, dm);
   PetscCall(PetscPopErrorHandler());
   PetscCall(PetscOptionsClearValue(NULL, "-dm_plex_gmsh_spacedim"));
-  if (ierr) PetscCall(PetscErrorMessage(ierr, NULL, &specific));
-  PetscCheck(!ierr, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "Cannot read mesh file '%s' (-mesh_file): %s", file,
-    specific && specific[0] ? specific : "PETSc's gmsh reader failed");
+  if (linear) PetscCall(PetscOptionsClearValue(NULL, "-dm_plex_gmsh_highorder"));
+  if (ierr) {
+    PetscCall(PetscErrorMessage(ierr, NULL, why));
+    if (!*why || !(*why)[0]) *why = (char *)"PETSc's gmsh reader failed";
+    *dm = NULL;
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* A second-order gmsh mesh (gmsh -order 2) comes from PETSc's reader with curved coordinates over a quadratic space,
+   which indent's geometry (coordinates at the vertices) would misread as degenerate cells: it is read again by its
+   corner nodes, straight-sided, and said so. The element order is -disc_degree's. */
+static PetscErrorCode ReadMeshFile(MPI_Comm comm, const char file[], DM *dm)
+{
+  char       *why    = NULL;
+  PetscMPIInt curved = 0;
+
+  PetscFunctionBeginUser;
+  PetscCall(ReadMeshFileAs(comm, file, PETSC_FALSE, dm, &why));
+  if (*dm) {
+    Vec      X;
+    PetscInt n, vStart, vEnd, cdim;
+    /* linear coordinates are cdim numbers a vertex; higher-order ones have more */
+    PetscCall(DMGetCoordinatesLocal(*dm, &X));
+    PetscCall(DMGetCoordinateDim(*dm, &cdim));
+    PetscCall(VecGetLocalSize(X, &n));
+    PetscCall(DMPlexGetDepthStratum(*dm, 0, &vStart, &vEnd));
+    curved = n != cdim * (vEnd - vStart);
+    PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &curved, 1, MPI_INT, MPI_MAX, comm));
+    if (!curved) PetscFunctionReturn(PETSC_SUCCESS);
+    PetscCall(DMDestroy(dm));
+  }
+  {
+    char *why_linear = NULL;
+    PetscCall(ReadMeshFileAs(comm, file, PETSC_TRUE, dm, &why_linear));
+    PetscCheck(*dm, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "Cannot read mesh file '%s' (-mesh_file): %s", file,
+      why ? why : why_linear);
+  }
+  PetscCall(PetscFPrintf(comm, PETSC_STDERR,
+    "indent: warning: mesh '%s' has cells of order 2 or higher (gmsh -order): indent takes their corner nodes, so "
+    "curved edges become straight; the element order is -disc_degree's\n", file));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
