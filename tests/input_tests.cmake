@@ -20,8 +20,13 @@ add_custom_command(OUTPUT ${MESHDIR}/truncated.msh ${MESHDIR}/corrupt.msh ${MESH
   COMMAND ${INDENT_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/make_bad_meshes.py ${MESHDIR}/cube41.msh ${MESHDIR}/cube22.msh
   ${MESHDIR}
   DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/make_bad_meshes.py ${MESHDIR}/cube41.msh ${MESHDIR}/cube22.msh)
+# A mesh partitioned by gmsh (-part), which PETSc's reader (3.18) does not take.
+add_custom_command(OUTPUT ${MESHDIR}/partitioned.msh
+  COMMAND ${GMSH_EXECUTABLE} -3 ${CMAKE_CURRENT_SOURCE_DIR}/meshes/cube.geo -setnumber h 0.35 -part 2 -format msh41
+    -o ${MESHDIR}/partitioned.msh > /dev/null
+  DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/meshes/cube.geo)
 add_custom_target(bad_meshes ALL DEPENDS ${MESHDIR}/truncated.msh ${MESHDIR}/corrupt.msh ${MESHDIR}/ghost.msh
-  ${MESHDIR}/lid.msh)
+  ${MESHDIR}/lid.msh ${MESHDIR}/partitioned.msh)
 
 # The longer messages, in pieces.
 string(CONCAT RE_UNKNOWN_PARAMETER "-mesh_geo_parameters: 'htip' is not a parameter of '.*berkovich_half.geo' "
@@ -185,6 +190,12 @@ indent_script_test(bad_msh_corrupt ${EXPECT_ERROR} "Cannot read mesh file '.*cor
 # Raised on rank 0 alone (PETSc's reader fails there while the other rank waits): the line, then MPI_Abort.
 bad_np2(bad_msh_corrupt_np2 ${EXPECT_ERROR} "Cannot read mesh file '.*corrupt.msh' \\(-mesh_file\\): "
   ${INDENT_NP2} -mesh_file ${MESHDIR}/corrupt.msh ${ELASTIC} -bc_fixed bottom -output_fields 0)
+string(CONCAT RE_PARTITIONED "Cannot read mesh file '.*partitioned.msh' \\(-mesh_file\\): it was partitioned by "
+  "gmsh \\(-part\\), which PETSc's reader does not take")
+indent_script_test(bad_msh_partitioned ${EXPECT_ERROR} "${RE_PARTITIONED}"
+  ${INDENT} -mesh_file ${MESHDIR}/partitioned.msh ${ELASTIC} -bc_fixed bottom -output_fields 0)
+bad_np2(bad_msh_partitioned_np2 ${EXPECT_ERROR} "${RE_PARTITIONED}"
+  ${INDENT_NP2} -mesh_file ${MESHDIR}/partitioned.msh ${ELASTIC} -bc_fixed bottom -output_fields 0)
 indent_script_test(bad_empty_volume ${EXPECT_ERROR}
   "Volume region 'ghost' of mesh '.*ghost.msh' is empty: its physical volume has no cells"
   ${INDENT} -mesh_file ${MESHDIR}/ghost.msh ${ELASTIC} -ghost_young 1 -ghost_poisson 0.3 -bc_fixed bottom -output_fields

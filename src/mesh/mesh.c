@@ -402,17 +402,39 @@ static PetscErrorCode ReadMeshFileAs(MPI_Comm comm, const char file[], PetscBool
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* A second-order gmsh mesh (gmsh -order 2) comes from PETSc's reader with curved coordinates over a quadratic space,
-   which indent's geometry (coordinates at the vertices) would misread as degenerate cells: it is read again by its
-   corner nodes, straight-sided, and said so. The element order is -disc_degree's. */
+/* Whether a gmsh file has a section that starts with a line "name" (the section markers are text also in a binary
+   file). Only after a failed read: it reads the whole file. */
+static PetscBool HasSection(const char file[], const char name[])
+{
+  FILE  *fp = fopen(file, "rb");
+  char   line[256];
+  size_t len = strlen(name);
+  int    found = 0;
+
+  if (!fp) return PETSC_FALSE;
+  while (!found && fgets(line, sizeof(line), fp)) found = !strncmp(line, name, len) && (line[len] == '\n' ||
+    line[len] == '\r' || line[len] == 0);
+  fclose(fp);
+  return found ? PETSC_TRUE : PETSC_FALSE;
+}
+
+/* A second-order gmsh mesh (gmsh -order 2) comes from PETSc's reader with coordinates over a quadratic space, which
+   indent's geometry (coordinates at the vertices) would misread as degenerate cells: it is read again by its corner
+   nodes, straight-sided, and said so. The element order is -disc_degree's. A read that fails does so on rank 0 alone,
+   the others waiting inside the reader: the error is raised there at once, not retried. */
 static PetscErrorCode ReadMeshFile(MPI_Comm comm, const char file[], DM *dm)
 {
-  char       *why    = NULL;
-  PetscMPIInt curved = 0;
+  char       *why = NULL;
+  PetscMPIInt curved;
 
   PetscFunctionBeginUser;
   PetscCall(ReadMeshFileAs(comm, file, PETSC_FALSE, dm, &why));
-  if (*dm) {
+  /* PETSc 3.18's reader stops at the partitions' section with "expecting $Nodes" */
+  PetscCheck(*dm || !HasSection(file, "$PartitionedEntities"), PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED,
+    "Cannot read mesh file '%s' (-mesh_file): it was partitioned by gmsh (-part), which PETSc's reader does not "
+    "take; save it unpartitioned (indent partitions the mesh over its ranks itself)", file);
+  PetscCheck(*dm, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "Cannot read mesh file '%s' (-mesh_file): %s", file, why);
+  {
     Vec      X;
     PetscInt n, vStart, vEnd, cdim;
     /* linear coordinates are cdim numbers a vertex; higher-order ones have more */
@@ -422,15 +444,12 @@ static PetscErrorCode ReadMeshFile(MPI_Comm comm, const char file[], DM *dm)
     PetscCall(DMPlexGetDepthStratum(*dm, 0, &vStart, &vEnd));
     curved = n != cdim * (vEnd - vStart);
     PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &curved, 1, MPI_INT, MPI_MAX, comm));
-    if (!curved) PetscFunctionReturn(PETSC_SUCCESS);
-    PetscCall(DMDestroy(dm));
   }
-  {
-    char *why_linear = NULL;
-    PetscCall(ReadMeshFileAs(comm, file, PETSC_TRUE, dm, &why_linear));
-    PetscCheck(*dm, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "Cannot read mesh file '%s' (-mesh_file): %s", file,
-      why ? why : why_linear);
-  }
+  if (!curved) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(DMDestroy(dm));
+  PetscCall(ReadMeshFileAs(comm, file, PETSC_TRUE, dm, &why));
+  PetscCheck(*dm, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "Cannot read mesh file '%s' (-mesh_file) by its corner "
+    "nodes: %s", file, why);
   PetscCall(PetscFPrintf(comm, PETSC_STDERR,
     "indent: warning: mesh '%s' has cells of order 2 or higher (gmsh -order): indent takes their corner nodes, so "
     "curved edges become straight; the element order is -disc_degree's\n", file));
