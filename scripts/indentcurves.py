@@ -9,7 +9,10 @@ Readers:
     (s), the segments named in the first column. Read with xlrd (Debian's python3-xlrd).
   - Hysitron TriboScan .txt exports: a header, then the columns 'Depth (nm)', 'Load (uN)' ('µN'), 'Time (s)'.
   - CSV with a header naming a depth and a load column, each with its unit in brackets or after an underscore
-    (depth_nm, "Depth (um)", load_uN, "Load (mN)"...), optionally a time column.
+    (depth_nm, "Depth (um)", load_uN, "Load (mN)"...), optionally a time column. Commas, semicolons or tabs
+    separate the cells (the header's most frequent of them); with semicolons or tabs a decimal comma is read as a
+    point (a spreadsheet's export in a European locale). UTF-8 with or without a byte-order mark, UTF-16 with one
+    (a spreadsheet's "Unicode text"), or else Latin-1 (Windows' 'µ').
   - NIGET's own format (.niget; as NIGET's file-utils.c reads it): a first line '#NIGET a b c d', the 0-based
     rows of the contact point, of the end of loading, of the end of the hold and of the end of unloading, then
     one 'depth force' pair per line, depth in nm and force in mN, blank-separated (a decimal comma is read as a
@@ -72,18 +75,35 @@ def _table(rows, header, path, first_line):
     return _curve(np.array(depth), np.array(load), np.array(time), None, path)
 
 
+def _text(path):
+    """A text file's contents, decoded by its byte-order mark (UTF-16, UTF-8), else as UTF-8, else as Latin-1."""
+    with open(path, "rb") as f:
+        raw = f.read()
+    if raw.startswith((b"\xff\xfe", b"\xfe\xff")):
+        try:
+            return raw.decode("utf-16")
+        except UnicodeDecodeError:
+            raise CurveError(f"{path}: marked as UTF-16 but not UTF-16 text") from None
+    try:
+        return raw.decode("utf-8-sig")
+    except UnicodeDecodeError:
+        return raw.decode("latin-1")
+
+
 def read_csv(path):
-    with open(path, newline="", encoding="utf-8-sig") as f:
-        rows = [r for r in csv.reader(f) if r and not r[0].lstrip().startswith("#")]
-    if len(rows) < 2:
+    lines = [l for l in _text(path).splitlines() if l.strip() and not l.lstrip().startswith("#")]
+    if len(lines) < 2:
         raise CurveError(f"{path}: no header and data")
+    sep = max(("\t", ";", ","), key=lines[0].count)
+    rows = list(csv.reader(lines, delimiter=sep))
+    if sep != ",":  # a decimal comma can only be told apart from the separator when the separator is not one
+        rows = [rows[0]] + [[re.sub(r"^(\s*[-+]?\d*),(\d)", r"\1.\2", c) for c in r] for r in rows[1:]]
     return _table(rows[1:], rows[0], path, 2)
 
 
 def read_hysitron(path):
     """TriboScan's export: free text, then a tab-separated header with 'Depth (nm)' and 'Load (µN)'."""
-    with open(path, encoding="latin-1") as f:
-        lines = f.read().splitlines()
+    lines = _text(path).splitlines()
     for k, line in enumerate(lines):
         cells = [c.strip() for c in line.split("\t")]
         low = [c.lower() for c in cells]

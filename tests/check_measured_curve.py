@@ -14,7 +14,9 @@
    on the mean, keep it where it was measured.
 2. Synthetic curves with known values: a CSV in um and mN and a Hysitron .txt in nm and uN, with a hold and a
    thermal-drift hold: units converted, the segments found from the load, and a frame compliance and a drift
-   rate removed exactly; a NIGET file (mN, decimal commas, a text line) read with the segments of its header.
+   rate removed exactly; the CSV as spreadsheets write it (semicolons and decimal commas with a UTF-8 byte-order
+   mark, tab-separated UTF-16, Latin-1 'µN') read alike; a NIGET file (mN, decimal commas, a text line) read with
+   the segments of its header.
 3. Bad files: a missing file, a curve that never unloads, an unknown unit, a .niget without its header or with
    rows that do not rise: exit 1 and one line naming the file.
 4. The tip of test 1's area function as an indenter table (--tip-table): pi r^2 equals A(h) at every row, 3%
@@ -104,6 +106,23 @@ def synthetic(args):
     check(kinds == [("loading", 0, 39), ("hold", 39, 45), ("unloading", 45, 65)], f"niget: segments {kinds}")
     err = np.max(np.abs(c["depth"] - hm)) + np.max(np.abs(c["load"] - P)) / 2000
     check(err < 1e-9 and len(c["depth"]) == len(hm), f"niget: mN to uN, decimal commas, a text line skipped: {err:.1e}")
+    # the same CSV as spreadsheets export it: semicolons and decimal commas (a European locale) in UTF-8 with a
+    # byte-order mark; tab-separated UTF-16 ("Unicode text"); Latin-1 with 'µN'
+    rows = [(a, b, c) for a, b, c in zip(t, hm / 1e3, P)]
+    variants = {"semicolon_comma.csv": ("Time (s);Depth (um);Load (\xb5N)\n", ";", True, "utf-8-sig"),
+                "unicode_text.csv": ("Time (s)\tDepth (um)\tLoad (\xb5N)\n", "\t", False, "utf-16"),
+                "latin1.csv": ("Time (s),Depth (um),Load (\xb5N)\n", ",", False, "latin-1")}
+    ref = indentcurves.read(csv_path, "csv")
+    for name, (head, sep, comma, enc) in variants.items():
+        path = os.path.join(args.workdir, name)
+        with open(path, "w", encoding=enc) as f:
+            f.write(head)
+            for r in rows:
+                cells = [f"{v:.17g}" for v in r]
+                f.write(sep.join(c.replace(".", ",") if comma else c for c in cells) + "\n")
+        c = indentcurves.read(path, "csv")
+        err = max(np.abs(c["depth"] - ref["depth"]).max(), np.abs(c["load"] - ref["load"]).max() / 2000)
+        check(err < 1e-12 and c["segments"] == ref["segments"], f"{name} ({enc}): as the plain CSV: {err:.1e}")
     for path, fmt in ((csv_path, "csv"), (txt_path, "hysitron")):
         c = indentcurves.correct(indentcurves.read(path, fmt), comp, drift)
         kinds = [(s[0], s[2] - s[1] + 1) for s in c["segments"]]
