@@ -225,13 +225,16 @@ set_tests_properties(axisymmetric_multilayer_vs_film axisymmetric_multilayer_np1
 
 # An indenter given as a table of its height against the radius (-indenter_type table): the 70.3 degree cone with
 # a 50 nm tip radius as 100 chords on the tip and one along the mantle gives the analytic cone's curve on a section
-# (measured: 1.1e-6 of P_max apart); bad tables are refused in one line naming the file.
+# (measured: 1.1e-6 of P_max apart), and so does the same table as a spreadsheet in a European locale saves it (a
+# byte-order mark, semicolons, decimal commas, CRLF); bad tables are refused in one line naming the file.
 set(TEST_LABEL validation)
 set(AXI_TABLE ${CMAKE_CURRENT_SOURCE_DIR}/data/indenter_cone70_R50.csv)
+set(AXI_TABLE_SHEET ${CMAKE_CURRENT_SOURCE_DIR}/data/indenter_cone70_R50_spreadsheet.csv)
 indent_script_test(axisymmetric_table_vs_cone ${RUN_CURVES_INDENT} --workdir ${CMAKE_CURRENT_BINARY_DIR}/axi_table
   --np 2 --rtol 1e-5 --atol 1e-4
   --variant "cone:-indenter_type cone"
   --variant "table:-indenter_type table -indenter_profile ${AXI_TABLE}"
+  --variant "spreadsheet:-indenter_type table -indenter_profile ${AXI_TABLE_SHEET}"
   -- -options_file ${CMAKE_SOURCE_DIR}/inputs/cone_axisymmetric.opts
   -mesh_file ${CMAKE_SOURCE_DIR}/inputs/axisymmetric_film.geo
   -mesh_geo_parameters h_tip=5,h_far=400,r_fine=100 -load_depth 20 -load_steps 8 -load_edge_steps 0

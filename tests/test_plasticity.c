@@ -535,6 +535,18 @@ static PetscErrorCode TestNewLawsRefused(void)
   PetscCheck(n == 3 && pts[4] == 0.1 && pts[5] == 0.5, PETSC_COMM_SELF, PETSC_ERR_PLIB, "table parsed to %" PetscInt_FMT
              " points", n);
   PetscCall(PetscFree(pts));
+  /* as spreadsheets save it: a UTF-8 byte-order mark; semicolons or tabs with decimal commas (a European locale) */
+  {
+    const char *forms[] = {"\xef\xbb\xbf" "0,0.3\n0.01,0.4\n0.1,0.5\n", "0;0,3\r\n0,01;0,4\r\n0,1;0,5\r\n",
+                           "\xef\xbb\xbf" "strain\tstress\n0\t0,3\n0,01\t0,4\n0,1\t0,5\n"};
+    for (size_t k = 0; k < sizeof(forms) / sizeof(forms[0]); ++k) {
+      PetscCall(IndHardeningTableParse(PETSC_COMM_SELF, forms[k], "t.csv", &n, &pts));
+      PetscCheck(n == 3 && pts[0] == 0 && pts[1] == 0.3 && pts[2] == 0.01 && pts[3] == 0.4 && pts[4] == 0.1 &&
+                 pts[5] == 0.5, PETSC_COMM_SELF, PETSC_ERR_PLIB, "spreadsheet form %d parsed to %" PetscInt_FMT
+                 " points", (int)k, n);
+      PetscCall(PetscFree(pts));
+    }
+  }
   /* a law added at run time is found by its name, and listed after the built-in ones */
   {
     const IndHardeningLaw *law;

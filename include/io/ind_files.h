@@ -38,3 +38,8 @@ void IndGeoScan(const char text[], IndGeoInfo *info);
    (or a gmsh option, with a dot: Mesh.MeshSizeMax) and value a finite number. Collective. */
 PetscErrorCode IndGeoCheckParameters(MPI_Comm comm, const char geo[], const IndGeoInfo *info, char *params[],
   PetscInt nparams);
+/* A line of a table of numbers the user wrote (a tensile curve, an indenter profile), as a spreadsheet may save it,
+   made blank-separated with decimal points in place: a UTF-8 byte-order mark at its start (first: the file's first
+   line) and carriage returns removed; with semicolons or tabs between the cells a comma is a decimal comma (a
+   European locale) and becomes a point, and otherwise commas separate. Pure. */
+void IndTableLineNormalize(char line[], PetscBool first);

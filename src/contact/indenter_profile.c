@@ -3,6 +3,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "ind_indenter_profile.h"
+#include "ind_files.h"
 
 #define IND_PROFILE_MAX_POINTS 100000
 
@@ -24,8 +25,9 @@ static int Parse(const char file[], PetscReal *pts, PetscInt *n, char msg[], siz
     char  *s = line, *end;
     double r, h;
     lineno++;
-    while (*s == ' ' || *s == '\t') ++s;
-    if (*s == '#' || *s == '\n' || *s == '\r' || *s == 0) continue;
+    IndTableLineNormalize(line, (PetscBool)(lineno == 1));
+    while (*s == ' ') ++s;
+    if (*s == '#' || *s == 0) continue;
     r = strtod(s, &end);
     if (end == s) {
       if (data == 0 && !header) { /* one header line before the data */
@@ -37,7 +39,7 @@ static int Parse(const char file[], PetscReal *pts, PetscInt *n, char msg[], siz
       return 1;
     }
     s = end;
-    while (*s == ' ' || *s == '\t' || *s == ',' || *s == ';') ++s;
+    while (*s == ' ') ++s;
     h = strtod(s, &end);
     if (end == s) {
       snprintf(msg, len, "-indenter_profile '%s', line %d: not a pair of numbers r,height (nm)", file, (int)lineno);

@@ -404,3 +404,19 @@ PetscErrorCode IndGeoCheckParameters(MPI_Comm comm, const char geo[], const IndG
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
+
+void IndTableLineNormalize(char line[], PetscBool first)
+{
+  const PetscBool decimal_comma = strchr(line, ';') || strchr(line, '\t') ? PETSC_TRUE : PETSC_FALSE;
+  char           *w             = line;
+
+  if (first && (unsigned char)line[0] == 0xef && (unsigned char)line[1] == 0xbb && (unsigned char)line[2] == 0xbf)
+    memmove(line, line + 3, strlen(line + 3) + 1);
+  for (char *r = line; *r; ++r) {
+    if (*r == '\r' || *r == '\n') continue;
+    if (*r == ',') *w++ = decimal_comma ? '.' : ' ';
+    else if (*r == ';' || *r == '\t') *w++ = ' ';
+    else *w++ = *r;
+  }
+  *w = 0;
+}

@@ -3,6 +3,7 @@
 #include "ind_hardening.h"
 #include "ind_common.h"
 #include "ind_options.h"
+#include "ind_files.h"
 
 /* A tabulated curve: the stress R (GPa) against the equivalent plastic strain p, from a tensile test (true
    stress against true plastic strain), piecewise linear between its points. Past the last point the stress is
@@ -69,8 +70,7 @@ PetscErrorCode IndHardeningTableParse(MPI_Comm comm, const char text[], const ch
     double a, b;
     char   rest[2];
     ++lineno;
-    for (char *c = line; *c; ++c)
-      if (*c == ',' || *c == ';' || *c == '\t') *c = ' ';
+    IndTableLineNormalize(line, (PetscBool)(lineno == 1));
     if (!line[strspn(line, " ")] || line[strspn(line, " ")] == '#') continue;
     if (sscanf(line, "%lf %lf %1s", &a, &b, rest) != 2) {
       /* one header line before the first point: names of the columns */
