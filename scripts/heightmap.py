@@ -4,8 +4,11 @@ Shared by export-curves.py (which writes a run's imprint) and the inverse fit (w
 A map here is a HeightMap: flat arrays x, y, z in nm, one entry per pixel or point.
 """
 import os
+import re
 
 import numpy as np
+
+import textfile
 
 GSF_MAGIC = b"Gwyddion Simple Field 1.0\n"
 # Gwyddion keeps base SI units; these are the lengths a map's XYUnits / ZUnits may name, in nm
@@ -95,27 +98,32 @@ def read_gsf(path):
 
 
 def read_xyz(path, unit="nm"):
-    """'x y z' lines (spaces, tabs or commas; '#' comments; a header line of names is skipped) in `unit`."""
+    """'x y z' lines (spaces, tabs, commas or semicolons; with tabs or semicolons a decimal comma is a point; '#'
+    comments; a header line of names is skipped; UTF-8, UTF-16 or Latin-1, textfile.py) in `unit`."""
     if unit not in UNITS_NM:
         raise MapError(f"{path}: unit '{unit}' is not a length ({', '.join(UNITS_NM)})")
     rows = []
     try:
-        with open(path, encoding="utf-8", errors="replace") as f:
-            for k, line in enumerate(f, 1):
-                words = line.split("#", 1)[0].replace(",", " ").split()
-                if not words:
-                    continue
-                try:
-                    vals = [float(w) for w in words]
-                except ValueError:
-                    if not rows and k <= 1:
-                        continue  # a header of column names
-                    raise MapError(f"{path}:{k}: not three numbers: {line.strip()[:60]}") from None
-                if len(vals) != 3:
-                    raise MapError(f"{path}:{k}: {len(vals)} numbers, not 3 (x y z)")
-                rows.append(vals)
+        for k, line in enumerate(textfile.read_text(path).splitlines(), 1):
+            line = line.split("#", 1)[0]
+            if ";" in line or "\t" in line:  # then a comma is a decimal comma
+                line = " ".join(textfile.decimal_points(c) for c in re.split(r"[;\t]", line))
+            words = line.replace(",", " ").split()
+            if not words:
+                continue
+            try:
+                vals = [float(w) for w in words]
+            except ValueError:
+                if not rows and k <= 1:
+                    continue  # a header of column names
+                raise MapError(f"{path}:{k}: not three numbers: {line.strip()[:60]}") from None
+            if len(vals) != 3:
+                raise MapError(f"{path}:{k}: {len(vals)} numbers, not 3 (x y z)")
+            rows.append(vals)
     except OSError as e:
         raise MapError(f"{path}: {e.strerror}") from None
+    except textfile.TextError as e:
+        raise MapError(str(e)) from None
     if not rows:
         raise MapError(f"{path}: no 'x y z' lines")
     a = np.array(rows) * UNITS_NM[unit]

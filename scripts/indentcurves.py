@@ -25,6 +25,8 @@ import re
 
 import numpy as np
 
+import textfile
+
 DEPTH_UNITS = {"nm": 1.0, "um": 1e3, "µm": 1e3, "mm": 1e6, "m": 1e9}
 LOAD_UNITS = {"un": 1.0, "µn": 1.0, "mn": 1e3, "n": 1e6, "nn": 1e-3}
 
@@ -76,18 +78,10 @@ def _table(rows, header, path, first_line):
 
 
 def _text(path):
-    """A text file's contents, decoded by its byte-order mark (UTF-16, UTF-8), else as UTF-8, else as Latin-1."""
-    with open(path, "rb") as f:
-        raw = f.read()
-    if raw.startswith((b"\xff\xfe", b"\xfe\xff")):
-        try:
-            return raw.decode("utf-16")
-        except UnicodeDecodeError:
-            raise CurveError(f"{path}: marked as UTF-16 but not UTF-16 text") from None
     try:
-        return raw.decode("utf-8-sig")
-    except UnicodeDecodeError:
-        return raw.decode("latin-1")
+        return textfile.read_text(path)
+    except textfile.TextError as e:
+        raise CurveError(str(e)) from None
 
 
 def read_csv(path):
@@ -97,7 +91,7 @@ def read_csv(path):
     sep = max(("\t", ";", ","), key=lines[0].count)
     rows = list(csv.reader(lines, delimiter=sep))
     if sep != ",":  # a decimal comma can only be told apart from the separator when the separator is not one
-        rows = [rows[0]] + [[re.sub(r"^(\s*[-+]?\d*),(\d)", r"\1.\2", c) for c in r] for r in rows[1:]]
+        rows = [rows[0]] + [[textfile.decimal_points(c) for c in r] for r in rows[1:]]
     return _table(rows[1:], rows[0], path, 2)
 
 

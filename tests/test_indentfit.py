@@ -280,6 +280,17 @@ class HeightMaps(unittest.TestCase):
             heightmap.read_map(path)
         with self.assertRaisesRegex(heightmap.MapError, "not a length"):
             heightmap.read_map(path, "furlong")
+        # as a spreadsheet saves it: semicolons and decimal commas with a byte-order mark, or tab-separated UTF-16
+        rows = np.column_stack([X.ravel(), Y.ravel(), (X + Y).ravel() + 0.25])
+        for name, sep, comma, enc in (("eu.xyz", ";", True, "utf-8-sig"), ("u16.xyz", "\t", True, "utf-16")):
+            other = os.path.join(self.dir, name)
+            with open(other, "w", encoding=enc) as f:
+                f.write(sep.join(("x", "y", "z")) + "\n")
+                for r in rows:
+                    cells = [repr(float(v)) for v in r]
+                    f.write(sep.join(c.replace(".", ",") if comma else c for c in cells) + "\n")
+            m = heightmap.read_map(other)
+            np.testing.assert_array_equal(np.column_stack([m.x, m.y, m.z]), rows)
 
 
 class Imprint(unittest.TestCase):
