@@ -42,29 +42,67 @@ static PetscReal CalibratedArea(PetscReal hc, void *ctx)
   return A;
 }
 
-/* Reads the columns depth_nm, load_uN and (if present) contact_area_nm2 of a CSV file. */
+/* The cells of a line split at sep, empty cells kept (a column's index must not shift past one), the line's end
+   removed. Returns their count, at most max. */
+static int SplitCells(char line[], char sep, char *cells[], int max)
+{
+  int n = 0;
+
+  line[strcspn(line, "\r\n")] = 0;
+  for (char *c = line; n < max;) {
+    cells[n++] = c;
+    c          = strchr(c, sep);
+    if (!c) break;
+    *c++ = 0;
+  }
+  return n;
+}
+
+/* Reads the columns depth_nm, load_uN and (if present) contact_area_nm2 of a CSV file: indent's own, or the same
+   saved by a spreadsheet (a UTF-8 byte-order mark; semicolons or tabs between the cells, and then decimal commas). */
 static PetscErrorCode ReadCurve(const char path[], PetscInt *n, PetscReal **h, PetscReal **P, PetscReal **A)
 {
   FILE    *fp = fopen(path, "r");
-  char     line[4096];
-  int      ch = -1, cP = -1, cA = -1, col = 0;
-  PetscInt cap = 1024;
+  char     line[4096], *cells[256], *head = line, sep;
+  int      ch = -1, cP = -1, cA = -1, ncol;
+  PetscInt cap = 1024, lineno = 1;
 
   PetscFunctionBeginUser;
   PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "Cannot open the curve '%s' (-op_file)", path);
   PetscCheck(fgets(line, sizeof(line), fp), PETSC_COMM_SELF, PETSC_ERR_FILE_READ, "'%s' (-op_file) is empty", path);
-  for (char *tok = strtok(line, ",\r\n"); tok; tok = strtok(NULL, ",\r\n"), ++col) {
-    if (!strcmp(tok, "depth_nm")) ch = col;
-    if (!strcmp(tok, "load_uN")) cP = col;
-    if (!strcmp(tok, "contact_area_nm2")) cA = col;
+  if (!strncmp(head, "\xef\xbb\xbf", 3)) head += 3;
+  sep  = strchr(head, ';') ? ';' : strchr(head, '\t') ? '\t' : ',';
+  ncol = SplitCells(head, sep, cells, 256);
+  for (int col = 0; col < ncol; ++col) {
+    const char *name = cells[col] + strspn(cells[col], " \"");
+    const size_t len = strcspn(name, " \"");
+    if (len == 8 && !strncmp(name, "depth_nm", len)) ch = col;
+    if (len == 7 && !strncmp(name, "load_uN", len)) cP = col;
+    if (len == 16 && !strncmp(name, "contact_area_nm2", len)) cA = col;
   }
   PetscCheck(ch >= 0 && cP >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED,
     "'%s' (-op_file) has no depth_nm and load_uN columns", path);
   PetscCall(PetscMalloc3(cap, h, cap, P, cap, A));
   *n = 0;
   while (fgets(line, sizeof(line), fp)) {
-    char *end;
-    col = 0;
+    const int cols[3] = {ch, cP, cA};
+    PetscReal v[3]    = {0, 0, 0};
+    ++lineno;
+    ncol = SplitCells(line, sep, cells, 256);
+    if (ncol == 1 && !cells[0][strspn(cells[0], " ")]) continue; /* a blank line */
+    for (int k = 0; k < 3; ++k) {
+      char *cell, *end;
+      if (cols[k] < 0) continue;
+      PetscCheck(cols[k] < ncol, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED,
+        "'%s' (-op_file) line %" PetscInt_FMT ": %d cells, no column %d", path, lineno, ncol, cols[k] + 1);
+      cell = cells[cols[k]];
+      if (sep != ',') /* a decimal comma */
+        for (char *c = cell; *c; ++c)
+          if (*c == ',') *c = '.';
+      v[k] = strtod(cell, &end);
+      PetscCheck(end != cell && !end[strspn(end, " ")], PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED,
+        "'%s' (-op_file) line %" PetscInt_FMT ": '%s' is not a number", path, lineno, cell);
+    }
     if (*n == cap) {
       PetscReal *h2, *P2, *A2;
       PetscCall(PetscMalloc3(2 * cap, &h2, 2 * cap, &P2, 2 * cap, &A2));
@@ -74,15 +112,7 @@ static PetscErrorCode ReadCurve(const char path[], PetscInt *n, PetscReal **h, P
       PetscCall(PetscFree3(*h, *P, *A));
       *h = h2, *P = P2, *A = A2, cap *= 2;
     }
-    (*A)[*n] = 0;
-    for (char *tok = strtok(line, ",\r\n"); tok; tok = strtok(NULL, ",\r\n"), ++col) {
-      const double v = strtod(tok, &end);
-      if (col == ch || col == cP || col == cA) PetscCheck(end != tok, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED,
-        "'%s' (-op_file) line %" PetscInt_FMT ": '%s' is not a number", path, *n + 2, tok);
-      if (col == ch) (*h)[*n] = v;
-      if (col == cP) (*P)[*n] = v;
-      if (col == cA) (*A)[*n] = v;
-    }
+    (*h)[*n] = v[0], (*P)[*n] = v[1], (*A)[*n] = v[2];
     (*n)++;
   }
   fclose(fp);

@@ -1,6 +1,8 @@
 #!/usr/bin/env python3
 """indent-op on a synthetic curve (loading P = C h^2, unloading P = alpha (h - h_f)^m) for a sharp
-Berkovich, A = 3 sqrt(3) tan^2(65.27 deg) h^2: S, H and E_r must match the closed forms to 1e-6.
+Berkovich, A = 3 sqrt(3) tan^2(65.27 deg) h^2: S, H and E_r must match the closed forms to 1e-6. The same curve as
+a spreadsheet saves it (a UTF-8 byte-order mark, semicolons and decimal commas, CRLF; or tabs) and with an empty
+column before the depth gives the same numbers in every digit; a cell that is not a number is one error line.
 
   check_op_cli.py INDENT-OP WORKDIR
 """
@@ -28,7 +30,7 @@ def main():
             h = hmax - (hmax - hf) * i / 40
             k += 1
             f.write(f"{k},{h:.17g},{alpha * (h - hf) ** m:.17g}\n")
-    out = subprocess.run([exe, "-op_file", path, "-indenter_type", "berkovich"], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True).stdout
+    out = run(exe, path)
     print(out, end="")
     S = m * alpha * (hmax - hf) ** (m - 1)
     hc = hmax - 0.75 * pmax / S
@@ -44,7 +46,34 @@ def main():
         worst = max(worst, abs(got[name] / exact - 1))
         print(f"{name}: {got[name]:.10g} vs closed form {exact:.10g}")
     print(f"worst relative error {worst:.2e} (tolerance 1e-6): {'ok' if worst <= 1e-6 else 'FAIL'}")
-    return 0 if worst <= 1e-6 else 1
+    bad = worst > 1e-6
+    with open(path) as f:
+        rows = [line.rstrip("\n").split(",") for line in f]
+    forms = {"spreadsheet.csv": (";", True, "utf-8-sig", "\r\n", False),
+             "tabs.csv": ("\t", False, "utf-8", "\n", False),
+             "empty_column.csv": (",", False, "utf-8", "\n", True)}
+    for name, (sep, comma, enc, eol, empty) in forms.items():
+        other = os.path.join(work, name)
+        with open(other, "w", encoding=enc, newline="") as f:
+            for k, r in enumerate(rows):
+                cells = ([r[0], "note" if k == 0 else ""] + r[1:]) if empty else r
+                f.write(sep.join(c.replace(".", ",") if comma else c for c in cells) + eol)
+        same = run(exe, other).splitlines()[1:] == out.splitlines()[1:]  # the first line names the file
+        bad |= not same
+        print(f"{name}: {'ok, the same output' if same else 'FAIL, another output'}")
+    text = os.path.join(work, "text.csv")
+    with open(text, "w") as f:
+        f.write("depth_nm,load_uN\n1,2\n2,4uN\n")
+    err = run(exe, text).strip().splitlines()
+    ok = len(err) == 1 and "line 3: '4uN' is not a number" in err[0]
+    bad |= not ok
+    print(f"text.csv: {'ok' if ok else 'FAIL'}: {err}")
+    return 1 if bad else 0
+
+
+def run(exe, path):
+    return subprocess.run([exe, "-op_file", path, "-indenter_type", "berkovich"], stdout=subprocess.PIPE,
+                          stderr=subprocess.STDOUT, text=True).stdout
 
 
 if __name__ == "__main__":
