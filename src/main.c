@@ -72,7 +72,7 @@ int main(int argc, char **argv)
   PetscBool            intro = HelpIntro(argc, argv);
   IndOptionsFileCopies copies;
 
-  if (IndOptionsFilesPrepare("indent", argc, argv, &copies)) return 1;
+  if (IndArgsCheckStray("indent", argc, argv) || IndOptionsFilesPrepare("indent", argc, argv, &copies)) return 1;
   /* a rank left running by a killed launcher would write on unseen */
   (void)IndParentWatchStart(IndSignalsReceived);
   /* PT-Scotch (the default partitioner) runs threads whose race draws a different partition each run,

@@ -206,7 +206,7 @@ int main(int argc, char **argv)
   PetscErrorCode       ierr;
   IndOptionsFileCopies copies;
 
-  if (IndOptionsFilesPrepare("indent-op", argc, argv, &copies)) return 1;
+  if (IndArgsCheckStray("indent-op", argc, argv) || IndOptionsFilesPrepare("indent-op", argc, argv, &copies)) return 1;
   IndHelpCaptureBegin();
   ierr = PetscInitialize(&argc, &argv, NULL, NULL);
   IndOptionsFilesRemoveCopies(&copies);

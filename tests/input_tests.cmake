@@ -47,6 +47,16 @@ function(bad_np2 name)
 endfunction()
 
 # ---- options whose values are out of range, missing or misspelt
+# A word that is neither an option nor the value of the one before it (PETSc would skip it without a word): the
+# second half of an unquoted list with a space.
+string(CONCAT RE_STRAY "'h_far=600' after '-mesh_geo_parameters h_tip=60,' is not an option, and an option takes "
+  "one value: quote a value that holds spaces")
+indent_script_test(bad_stray_argument ${EXPECT_ERROR} "${RE_STRAY}"
+  ${INDENT} ${PAPER_COARSE} -mesh_geo_parameters h_tip=60, h_far=600)
+bad_np2(bad_stray_argument_np2 ${EXPECT_ERROR} "${RE_STRAY}"
+  ${INDENT_NP2} ${PAPER_COARSE} -mesh_geo_parameters h_tip=60, h_far=600)
+indent_script_test(bad_stray_argument_op ${EXPECT_ERROR} "^indent-op: error: 'curve.csv' is not an option"
+  $<TARGET_FILE:indent-op> curve.csv)
 indent_script_test(bad_missing_mesh ${EXPECT_ERROR} "Mesh file 'nowhere.msh' \\(-mesh_file\\) does not exist"
   ${INDENT} -mesh_file nowhere.msh ${ELASTIC})
 indent_script_test(bad_missing_region ${EXPECT_ERROR} "no surface named 'lid' \\(required by -bc_fixed\\)"

@@ -18,3 +18,7 @@ typedef struct {
 int  IndOptionsFilesPrepare(const char program[], int argc, char **argv, IndOptionsFileCopies *copies);
 /* After PetscInitialize (or on the way out): removes the copies. */
 void IndOptionsFilesRemoveCopies(IndOptionsFileCopies *copies);
+/* Before PetscInitialize: a word of the command line that is neither an option nor the value of the one before it,
+   which PETSc would skip without a word (the second half of an unquoted value with a space), ends the program with
+   one line naming it (from the first rank only): 1; 0 when there is none. */
+int  IndArgsCheckStray(const char program[], int argc, char **argv);

@@ -360,6 +360,14 @@ PetscErrorCode IndOptionsStringArray_Private(PetscOptionItems *po, const char op
   }
   if (Listing(po)) PetscCall(HelpLine(po, opt, what, text, "none", given, str));
   WithoutHelp(po, PetscOptionsStringArray_Private(po, opt, text, "", values, n, set));
+  /* "a=1, b=2" (quoted, or from an options file): the entries without the blanks around them */
+  for (PetscInt i = 0; given && i < *n; ++i) {
+    char  *v = values[i];
+    size_t len;
+    memmove(v, v + strspn(v, " \t"), strlen(v + strspn(v, " \t")) + 1);
+    len = strlen(v);
+    while (len && (v[len - 1] == ' ' || v[len - 1] == '\t')) v[--len] = 0;
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -1,4 +1,5 @@
 #define _XOPEN_SOURCE 700 /* mkstemp */
+#include <ctype.h>
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -120,4 +121,37 @@ void IndOptionsFilesRemoveCopies(IndOptionsFileCopies *copies)
 {
   for (int k = 0; k < copies->n; ++k) unlink(copies->path[k]);
   copies->n = 0;
+}
+
+/* PETSc's test for an option's name (PetscOptionsValidKey): '-', an optional second '-', then a letter; so "-5" is a
+   value. */
+static int IsKey(const char s[])
+{
+  if (s[0] != '-') return 0;
+  if (s[1] == '-') ++s;
+  return isalpha((unsigned char)s[1]) != 0;
+}
+
+int IndArgsCheckStray(const char program[], int argc, char **argv)
+{
+  /* PETSc's own walk over the arguments (PetscOptionsInsertArgs): a key takes the next word as its value unless
+     that is a key too; -prefix_pop takes none, -options_file and -prefix_push always one. A word that is neither,
+     PETSc skips without a word: an unquoted value with a space ("-mesh_geo_parameters a=1, b=2") would lose its
+     second half. */
+  for (int k = 1; k < argc; ++k) {
+    if (!IsKey(argv[k])) {
+      if (FirstRank()) {
+        if (k > 2 && !IsKey(argv[k - 1]))
+          fprintf(stderr, "%s: error: '%s' after '%s %s' is not an option, and an option takes one value: quote a "
+                  "value that holds spaces, or write a list without them (a=1,b=2)\n", program, argv[k], argv[k - 2],
+                  argv[k - 1]);
+        else fprintf(stderr, "%s: error: '%s' is not an option (options start with '-')\n", program, argv[k]);
+      }
+      return 1;
+    }
+    if (!strcmp(argv[k], "-prefix_pop")) continue;
+    if (k + 1 < argc && (!IsKey(argv[k + 1]) || !strcmp(argv[k], "-options_file") || !strcmp(argv[k], "-prefix_push")))
+      ++k;
+  }
+  return 0;
 }

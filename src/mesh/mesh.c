@@ -534,6 +534,17 @@ PetscErrorCode IndMeshCreate(MPI_Comm comm, IndMesh *out)
     "Parameters of a .geo -mesh_file, passed to gmsh as -setnumber name value", "name=value,...", params, &nparams,
     &has_params));
   if (!has_params) nparams = 0;
+  /* "h_tip = 4": the blanks around '=' go (those around an entry are gone already) */
+  for (PetscInt i = 0; i < nparams; ++i) {
+    char  *eq = strchr(params[i], '='), *value;
+    size_t len;
+    if (!eq) continue;
+    value = eq + 1 + strspn(eq + 1, " \t");
+    len   = (size_t)(eq - params[i]);
+    while (len && (params[i][len - 1] == ' ' || params[i][len - 1] == '\t')) --len;
+    params[i][len] = '=';
+    memmove(params[i] + len + 1, value, strlen(value) + 1);
+  }
   PetscCall(IndOptionsInt("-mesh_refine", "Uniform refinements after distribution", NULL, refine, &refine, NULL));
   PetscCall(IndOptionsReal("-mesh_perturb",
     "Random displacement of interior vertices of the mesh as read, as a fraction of its shortest edge (tests)", "",
