@@ -12,6 +12,7 @@ static const char help[] = "indent: finite-element nanoindentation of elasto-pla
 #include "ind_iofault.h"
 #include "ind_runlock.h"
 #include "ind_files.h"
+#include "ind_options.h"
 
 static int stopped; /* the signal that stopped the run after its checkpoint (0: none) */
 
@@ -49,6 +50,7 @@ static PetscErrorCode Run(void)
   IndApp app;
 
   PetscFunctionBeginUser;
+  PetscCall(IndOptionsCheckSpelling(PETSC_COMM_WORLD));
   PetscCall(CheckOptionsFirst());
   PetscCall(IndAppCreate(PETSC_COMM_WORLD, &app));
   /* the set-up has read (and listed) every option; a user asking for the list does not want the run */

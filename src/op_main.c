@@ -213,6 +213,7 @@ int main(int argc, char **argv)
   if (ierr) return (int)ierr;
   ierr = IndErrorSetUp("indent-op");
   if (!ierr) ierr = IndHelpCaptureEnd();
+  if (!ierr) ierr = IndOptionsCheckSpelling(PETSC_COMM_WORLD);
   if (!ierr) ierr = Analyse();
   if (IndHelpListing()) (void)IndHelpPrint(help);
   return IndErrorFinish(ierr);

@@ -55,6 +55,13 @@ indent_script_test(bad_stray_argument ${EXPECT_ERROR} "${RE_STRAY}"
   ${INDENT} ${PAPER_COARSE} -mesh_geo_parameters h_tip=60, h_far=600)
 bad_np2(bad_stray_argument_np2 ${EXPECT_ERROR} "${RE_STRAY}"
   ${INDENT_NP2} ${PAPER_COARSE} -mesh_geo_parameters h_tip=60, h_far=600)
+# An option written with '=' (PETSc takes it for an option of that whole name): said so, not "-domain_poisson is
+# missing".
+set(RE_EQUALS "-domain_poisson=0.3: an option and its value are separated by a blank, not '=' \\(-domain_poisson 0.3\\)")
+indent_script_test(bad_option_with_equals ${EXPECT_ERROR} "${RE_EQUALS}"
+  ${INDENT} ${OK_BOX} -domain_young 100 -domain_poisson=0.3 -bc_fixed bottom)
+bad_np2(bad_option_with_equals_np2 ${EXPECT_ERROR} "${RE_EQUALS}"
+  ${INDENT_NP2} ${OK_BOX} -domain_young 100 -domain_poisson=0.3 -bc_fixed bottom)
 indent_script_test(bad_stray_argument_op ${EXPECT_ERROR} "^indent-op: error: 'curve.csv' is not an option"
   $<TARGET_FILE:indent-op> curve.csv)
 indent_script_test(bad_missing_mesh ${EXPECT_ERROR} "Mesh file 'nowhere.msh' \\(-mesh_file\\) does not exist"

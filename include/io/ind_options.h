@@ -67,6 +67,10 @@ PetscErrorCode IndOptionsIntArray_Private(PetscOptionItems *, const char opt[], 
 
 /* Errors on options nobody read, except those PETSc only reads lazily (see options.c). */
 PetscErrorCode IndOptionsCheckUnused(MPI_Comm comm);
+/* Before the set-up reads any option: an option written with '=' ("-film_young=70", which PETSc takes for an option
+   of that whole name and no value) is an error that says how to write it, before the option it meant is reported
+   missing. */
+PetscErrorCode IndOptionsCheckSpelling(MPI_Comm comm);
 
 /* -help (help.c). IndHelpCaptureBegin() goes before PetscInitialize(): it collects what PETSc and indent
    print for -help. IndHelpCaptureEnd(), after PetscInitialize(), keeps collecting with -help and otherwise

@@ -55,6 +55,25 @@ PetscErrorCode IndOptionsCheckUnused(MPI_Comm comm)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+PetscErrorCode IndOptionsCheckSpelling(MPI_Comm comm)
+{
+  PetscInt n;
+  char   **names, **values, bad[256] = "";
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsLeftGet(NULL, &n, &names, &values));
+  for (PetscInt i = 0; i < n && !bad[0]; ++i)
+    if (strchr(names[i], '=')) PetscCall(PetscStrncpy(bad, names[i], sizeof(bad)));
+  PetscCall(PetscOptionsLeftRestore(NULL, &n, &names, &values));
+  if (bad[0]) {
+    char *eq = strchr(bad, '=');
+    *eq      = 0;
+    SETERRQ(comm, PETSC_ERR_ARG_WRONG, "-%s=%s: an option and its value are separated by a blank, not '=' (-%s %s)",
+            bad, eq + 1, bad, eq + 1);
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* ---- checked conversions ---------------------------------------------------------------------- */
 
 static void FullName(PetscOptionItems *po, const char opt[], char name[], size_t len)
