@@ -213,6 +213,11 @@ indent_script_test(bad_msh_partitioned ${EXPECT_ERROR} "${RE_PARTITIONED}"
   ${INDENT} -mesh_file ${MESHDIR}/partitioned.msh ${ELASTIC} -bc_fixed bottom -output_fields 0)
 bad_np2(bad_msh_partitioned_np2 ${EXPECT_ERROR} "${RE_PARTITIONED}"
   ${INDENT_NP2} -mesh_file ${MESHDIR}/partitioned.msh ${ELASTIC} -bc_fixed bottom -output_fields 0)
+string(CONCAT RE_BLANK_NAME "Volume region 'thin film' cannot name options \\(-thin film_young\\): a volume's physical "
+  "name may hold letters, digits, '_', '-' and '.'. rename it in the mesh \\(e.g. 'thin_film'\\)")
+indent_script_test(bad_volume_name ${EXPECT_ERROR} --fresh ${CMAKE_CURRENT_BINARY_DIR}/bad_volume_name "${RE_BLANK_NAME}"
+  ${INDENT} -mesh_file ${CMAKE_CURRENT_SOURCE_DIR}/meshes/blank_name.geo -bc_fixed bottom
+  -output_dir ${CMAKE_CURRENT_BINARY_DIR}/bad_volume_name)
 indent_script_test(bad_empty_volume ${EXPECT_ERROR}
   "Volume region 'ghost' of mesh '.*ghost.msh' is empty: its physical volume has no cells"
   ${INDENT} -mesh_file ${MESHDIR}/ghost.msh ${ELASTIC} -ghost_young 1 -ghost_poisson 0.3 -bc_fixed bottom -output_fields

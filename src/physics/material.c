@@ -1,3 +1,4 @@
+#include <ctype.h>
 #include "material_impl.h"
 #include "ind_material.h"
 #include "ind_elasticity.h"
@@ -58,12 +59,34 @@ static PetscErrorCode ReadDensifying(MPI_Comm comm, const char prefix[], IndMate
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* A volume's name prefixes its options (-film_young): a blank or a sign the command line or an options file would
+   split it at ('thin film') makes them impossible to give, so the name is refused with one that would do. */
+static PetscErrorCode CheckPrefixName(MPI_Comm comm, const char region[])
+{
+  char   better[IND_NAME_LEN];
+  size_t k = 0, bad = 0;
+
+  PetscFunctionBeginUser;
+  for (; region[k] && k + 1 < sizeof(better); ++k) {
+    const PetscBool ok = (PetscBool)(isalnum((unsigned char)region[k]) || region[k] == '_' || region[k] == '-' ||
+                                     region[k] == '.');
+    better[k] = ok ? region[k] : '_';
+    bad += !ok;
+  }
+  better[k] = 0;
+  PetscCheck(!bad, comm, PETSC_ERR_USER_INPUT,
+    "Volume region '%s' cannot name options (-%s_young): a volume's physical name may hold letters, digits, '_', '-' "
+    "and '.'; rename it in the mesh (e.g. '%s')", region, region, better);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscErrorCode ReadMaterial(MPI_Comm comm, const char region[], IndMaterial *m)
 {
   char      prefix[IND_NAME_LEN + 2], opt[IND_NAME_LEN + 32], title[2 * IND_NAME_LEN + 64];
   PetscBool has_E, has_nu;
 
   PetscFunctionBeginUser;
+  PetscCall(CheckPrefixName(comm, region));
   PetscCall(PetscStrncpy(m->region, region, sizeof(m->region)));
   PetscCall(PetscSNPrintf(prefix, sizeof(prefix), "%s_", region));
   PetscCall(PetscSNPrintf(title, sizeof(title), IND_TITLE "Material of volume region '%s' (-%s*)", region, prefix));
