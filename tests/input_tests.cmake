@@ -57,7 +57,8 @@ bad_np2(bad_stray_argument_np2 ${EXPECT_ERROR} "${RE_STRAY}"
   ${INDENT_NP2} ${PAPER_COARSE} -mesh_geo_parameters h_tip=60, h_far=600)
 # An option written with '=' (PETSc takes it for an option of that whole name): said so, not "-domain_poisson is
 # missing".
-set(RE_EQUALS "-domain_poisson=0.3: an option and its value are separated by a blank, not '=' \\(-domain_poisson 0.3\\)")
+string(CONCAT RE_EQUALS "-domain_poisson=0.3: an option and its value are separated by a blank, not '=' "
+  "\\(-domain_poisson 0.3\\)")
 indent_script_test(bad_option_with_equals ${EXPECT_ERROR} "${RE_EQUALS}"
   ${INDENT} ${OK_BOX} -domain_young 100 -domain_poisson=0.3 -bc_fixed bottom)
 bad_np2(bad_option_with_equals_np2 ${EXPECT_ERROR} "${RE_EQUALS}"
@@ -215,7 +216,8 @@ bad_np2(bad_msh_partitioned_np2 ${EXPECT_ERROR} "${RE_PARTITIONED}"
   ${INDENT_NP2} -mesh_file ${MESHDIR}/partitioned.msh ${ELASTIC} -bc_fixed bottom -output_fields 0)
 string(CONCAT RE_BLANK_NAME "Volume region 'thin film' cannot name options \\(-thin film_young\\): a volume's physical "
   "name may hold letters, digits, '_', '-' and '.'. rename it in the mesh \\(e.g. 'thin_film'\\)")
-indent_script_test(bad_volume_name ${EXPECT_ERROR} --fresh ${CMAKE_CURRENT_BINARY_DIR}/bad_volume_name "${RE_BLANK_NAME}"
+indent_script_test(bad_volume_name ${EXPECT_ERROR} --fresh ${CMAKE_CURRENT_BINARY_DIR}/bad_volume_name
+  "${RE_BLANK_NAME}"
   ${INDENT} -mesh_file ${CMAKE_CURRENT_SOURCE_DIR}/meshes/blank_name.geo -bc_fixed bottom
   -output_dir ${CMAKE_CURRENT_BINARY_DIR}/bad_volume_name)
 indent_script_test(bad_empty_volume ${EXPECT_ERROR}
