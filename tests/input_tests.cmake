@@ -198,22 +198,16 @@ indent_script_test(bad_output_dir_is_file ${EXPECT_ERROR} --keep ${BAD_DIR}/a_fi
 bad_np2(bad_output_dir_parent_file_np2 ${EXPECT_ERROR} --keep ${BAD_DIR}/b_file
   "-output_dir '.*b_file/run' cannot be the output directory: '.*b_file' is not a directory"
   ${INDENT_NP2} ${OK_BOX} ${ELASTIC} -bc_fixed bottom -output_dir ${BAD_DIR}/b_file/run)
-indent_script_test(bad_msh_truncated ${EXPECT_ERROR}
-  "Mesh file '.*truncated.msh' \\(-mesh_file\\) is truncated or corrupt"
-  ${INDENT} -mesh_file ${MESHDIR}/truncated.msh ${ELASTIC} -bc_fixed bottom -output_fields 0)
-bad_np2(bad_msh_truncated_np2 ${EXPECT_ERROR} "Mesh file '.*truncated.msh' \\(-mesh_file\\) is truncated or corrupt"
-  ${INDENT_NP2} -mesh_file ${MESHDIR}/truncated.msh ${ELASTIC} -bc_fixed bottom -output_fields 0)
-indent_script_test(bad_msh_corrupt ${EXPECT_ERROR} "Cannot read mesh file '.*corrupt.msh' \\(-mesh_file\\): "
-  ${INDENT} -mesh_file ${MESHDIR}/corrupt.msh ${ELASTIC} -bc_fixed bottom -output_fields 0)
-# Raised on rank 0 alone (PETSc's reader fails there while the other rank waits): the line, then MPI_Abort.
-bad_np2(bad_msh_corrupt_np2 ${EXPECT_ERROR} "Cannot read mesh file '.*corrupt.msh' \\(-mesh_file\\): "
-  ${INDENT_NP2} -mesh_file ${MESHDIR}/corrupt.msh ${ELASTIC} -bc_fixed bottom -output_fields 0)
-string(CONCAT RE_PARTITIONED "Cannot read mesh file '.*partitioned.msh' \\(-mesh_file\\): it was partitioned by "
-  "gmsh \\(-part\\), which PETSc's reader does not take")
-indent_script_test(bad_msh_partitioned ${EXPECT_ERROR} "${RE_PARTITIONED}"
-  ${INDENT} -mesh_file ${MESHDIR}/partitioned.msh ${ELASTIC} -bc_fixed bottom -output_fields 0)
-bad_np2(bad_msh_partitioned_np2 ${EXPECT_ERROR} "${RE_PARTITIONED}"
-  ${INDENT_NP2} -mesh_file ${MESHDIR}/partitioned.msh ${ELASTIC} -bc_fixed bottom -output_fields 0)
+# A mesh file that cannot be read, on 1 and 2 ranks. Rank 0 alone reads: on 2 ranks the line, then MPI_Abort.
+function(bad_mesh_file name regex)
+  indent_script_test(bad_msh_${name} ${EXPECT_ERROR} "${regex}"
+    ${INDENT} -mesh_file ${MESHDIR}/${name}.msh ${ELASTIC} -bc_fixed bottom -output_fields 0)
+  bad_np2(bad_msh_${name}_np2 ${EXPECT_ERROR} "${regex}"
+    ${INDENT_NP2} -mesh_file ${MESHDIR}/${name}.msh ${ELASTIC} -bc_fixed bottom -output_fields 0)
+endfunction()
+bad_mesh_file(truncated "Mesh file '.*truncated.msh' \\(-mesh_file\\) is truncated or corrupt")
+bad_mesh_file(corrupt "Cannot read mesh file '.*corrupt.msh' \\(-mesh_file\\): ")
+bad_mesh_file(partitioned "Cannot read mesh file .*partitioned.msh. .-mesh_file.: it was partitioned by gmsh .-part.")
 string(CONCAT RE_BLANK_NAME "Volume region 'thin film' cannot name options \\(-thin film_young\\): a volume's physical "
   "name may hold letters, digits, '_', '-' and '.'. rename it in the mesh \\(e.g. 'thin_film'\\)")
 indent_script_test(bad_volume_name ${EXPECT_ERROR} --fresh ${CMAKE_CURRENT_BINARY_DIR}/bad_volume_name
