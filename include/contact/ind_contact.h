@@ -156,8 +156,9 @@ PetscErrorCode IndContactRollback(IndContact contact);
 PetscErrorCode IndContactCheckTouched(IndContact contact, PetscReal depth_max, PetscInt touching);
 /* warning[0] = 0, or the text: nodes on the edge of the modelled surface touch the indenter. */
 PetscErrorCode IndContactCheckEdge(IndContact contact, PetscReal depth, char warning[], size_t len);
-/* warning[0] = 0, or the text: A(h_c) of the Oliver-Pharr analysis exceeds the surface's projected area. */
-PetscErrorCode IndContactCheckArea(IndContact contact, PetscReal area_hc, char warning[], size_t len);
+/* why[0] = 0, or why H and E_r are withheld: A(h_c) of the Oliver-Pharr analysis exceeds the surface's projected
+   area. */
+PetscErrorCode IndContactCheckArea(IndContact contact, PetscReal area_hc, char why[], size_t len);
 /* Whether the contact at the largest load, nodes of the modelled part in contact, resolves the contact area
    for Oliver-Pharr: at least min_nodes over the whole indent (the modelled part times the model's symmetry),
    about sqrt(min_nodes / pi) node spacings across its radius; why says otherwise. */

@@ -252,10 +252,10 @@ PetscErrorCode IndSummaryFinish(IndSummary s, const IndIndenter *ind, const IndR
     IndContactCheckResolved(info->contact, pmax->contact, s->min_contact_nodes, why, sizeof(why));
     if (why[0]) code = 4;
   }
-  if (!code && info->contact) { /* resolved: does A(h_c) fit on the modelled surface? */
-    char text[IND_WARNING_LEN];
-    PetscCall(IndContactCheckArea(info->contact, r.A, text, sizeof(text)));
-    if (text[0]) PetscCall(IndWarningsAdd(s->comm, info->warnings, "op_area", print, text));
+  if (!code && info->contact) { /* resolved: does A(h_c) fit on the modelled surface? Else H and E_r are not a
+                                    half-space's, nor the block's */
+    PetscCall(IndContactCheckArea(info->contact, r.A, why, sizeof(why)));
+    if (why[0]) code = 4;
   }
   PetscCall(PetscFree2(h, P));
 

@@ -31,15 +31,15 @@ PetscErrorCode IndContactCheckEdge(IndContact c, PetscReal depth, char warning[]
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode IndContactCheckArea(IndContact c, PetscReal area_hc, char warning[], size_t len)
+PetscErrorCode IndContactCheckArea(IndContact c, PetscReal area_hc, char why[], size_t len)
 {
   PetscFunctionBeginUser;
-  warning[0] = 0;
+  why[0] = 0;
   if (area_hc > c->surface_area)
-    PetscCall(PetscSNPrintf(warning, len,
-                            "the Oliver-Pharr contact area A(h_c) = %.6g nm^2 exceeds the area of the modelled "
-                            "surface '%s' (%.6g nm^2, symmetry included): the indenter is too large for this block, "
-                            "and the hardness and modulus are meaningless",
+    PetscCall(PetscSNPrintf(why, len,
+                            "H and E_r withheld: the Oliver-Pharr contact area A(h_c) = %.6g nm^2 exceeds the area of "
+                            "the modelled surface '%s' (%.6g nm^2, symmetry included): the indenter is too large for "
+                            "this block; model a wider one",
                             (double)area_hc, c->surface, (double)c->surface_area));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
