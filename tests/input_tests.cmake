@@ -88,6 +88,14 @@ indent_script_test(bad_plastic_missing_yield ${EXPECT_ERROR}
   ${INDENT} ${OK_BOX} ${ELASTIC} -domain_model plastic -bc_fixed bottom)
 indent_script_test(bad_plastic_yield ${EXPECT_ERROR} "-domain_yield must be > 0"
   ${INDENT} ${OK_BOX} ${PLASTIC} -domain_yield -1 -bc_fixed bottom)
+# a stress in MPa: the region would never yield
+indent_script_test(bad_plastic_yield_mpa ${EXPECT_ERROR}
+  "The initial yield stress 300.? GPa \\(-domain_yield\\) is not below the region's Young's modulus 100.? GPa"
+  ${INDENT} ${OK_BOX} ${PLASTIC} -domain_yield 300 -domain_saturation 500 -bc_fixed bottom)
+indent_script_test(bad_swift_mpa ${EXPECT_ERROR}
+  "yield stress 199.* GPa \\(-domain_swift_k and -domain_swift_eps0\\) is not below the region's Young's modulus"
+  ${INDENT} ${OK_BOX} -domain_young 100 -domain_poisson 0.3 -domain_model plastic -domain_hardening swift
+  -domain_swift_k 500 -domain_swift_eps0 0.01 -domain_hardening_exponent 0.2 -formulation small -bc_fixed bottom)
 indent_script_test(bad_plastic_voce_rate ${EXPECT_ERROR} "-domain_voce_rate must be >= 0"
   ${INDENT} ${OK_BOX} ${PLASTIC} -domain_voce_rate -2 -bc_fixed bottom)
 indent_script_test(bad_plastic_kinematic ${EXPECT_ERROR} "-domain_kinematic must be >= 0"

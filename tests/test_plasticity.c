@@ -397,7 +397,7 @@ static PetscErrorCode TestRobustness(void)
 static PetscErrorCode TestParamsCheck(void)
 {
   const char *option[] = {"-film_young", "-film_young", "-film_yield", "-film_yield", "-film_saturation",
-    "-film_voce_rate", "-film_kinematic", "-film_hardening_slope", "-film_voce_rate"};
+    "-film_voce_rate", "-film_kinematic", "-film_hardening_slope", "-film_voce_rate", "-film_yield"};
   const int   ncases   = (int)(sizeof(option) / sizeof(option[0]));
 
   PetscFunctionBeginUser;
@@ -415,7 +415,8 @@ static PetscErrorCode TestParamsCheck(void)
     case 5: IndHardeningSetVoce(&m, 0.5, -1.0); break;
     case 6: m.H = -1.0; break;
     case 7: IndHardeningSetLinear(&m, -1.0); break;
-    default: IndHardeningSetVoce(&m, 0.1, (3.0 * m.mu + m.H) / (m.R0 - 0.1)); /* softening, a flat return equation */
+    case 8: IndHardeningSetVoce(&m, 0.1, (3.0 * m.mu + m.H) / (m.R0 - 0.1)); break; /* softening: a flat return */
+    default: m.R0 = 9.0 * m.kappa * m.mu / (3.0 * m.kappa + m.mu); /* a yield strain of 1: a stress in MPa */
     }
     PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
     ierr = IndPlasticParamsCheck(&m, "film_", PETSC_COMM_SELF);

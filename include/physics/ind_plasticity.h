@@ -67,6 +67,9 @@ PetscErrorCode IndPlasticCommonCheck(const IndPlasticParams *m, const char prefi
 /* Rejects non-physical parameters; prefix is the region's option prefix ("film_") used to name the
    offending option in the message. Plastic parameters are not checked when elastic_only is set. */
 PetscErrorCode IndPlasticParamsCheck(const IndPlasticParams *m, const char prefix[], MPI_Comm comm);
+/* Rejects an initial yield stress R0 at or above the Young's modulus of kappa and mu (a yield strain of 1 or more:
+   stresses given in MPa), naming the option R0 came from; pre is the region's option prefix. */
+PetscErrorCode IndPlasticYieldCheckModulus(const IndPlasticParams *m, const char pre[], MPI_Comm comm);
 
 /* Stress update from the total strain eps at t_{n+1} and the history old at t_n.
    Writes new_state (may be the same pointer as old), sigma, and, when not NULL, the consistent

@@ -17,6 +17,7 @@ PetscErrorCode IndDensifyingParamsCheck(const IndPlasticParams *m, const char pr
     (double)m->yield_pressure);
   PetscCheck(m->densification_modulus >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE,
     "-%sdensification_modulus must be >= 0 (GPa), got %g", pre, (double)m->densification_modulus);
+  PetscCall(IndPlasticYieldCheckModulus(m, pre, comm));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -35,9 +35,32 @@ PetscErrorCode IndPlasticParamsCheck(const IndPlasticParams *m, const char prefi
 
   PetscCheck(m->H >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-%skinematic must be >= 0 (GPa), got %g", pre, (double)m->H);
   PetscCheck(m->law, comm, PETSC_ERR_ARG_WRONGSTATE, "No hardening law for region prefix '%s'", pre);
+  PetscCall(IndPlasticYieldCheckModulus(m, pre, comm)); /* first: a stress in MPa fails the law's checks obscurely */
   PetscCall(m->law->check(m, pre, comm));
   /* a law that derives R0 from its own parameters has checked them: this names -yield for the others */
   PetscCheck(m->R0 > 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-%syield must be > 0 (GPa), got %g", pre, (double)m->R0);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* No solid yields at a strain of 1: an initial yield stress at or above E is a stress given in MPa (or a region
+   meant to stay elastic), and would silently make the region elastic. */
+PetscErrorCode IndPlasticYieldCheckModulus(const IndPlasticParams *m, const char pre[], MPI_Comm comm)
+{
+  const PetscReal E    = 9.0 * m->kappa * m->mu / (3.0 * m->kappa + m->mu);
+  const char     *name = m->law ? m->law->name : NULL;
+  char            opt[256];
+  PetscBool       swift = PETSC_FALSE, table = PETSC_FALSE;
+
+  PetscFunctionBeginUser;
+  if (name) PetscCall(PetscStrcmp(name, "swift", &swift));
+  if (name) PetscCall(PetscStrcmp(name, "table", &table));
+  if (swift) PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%sswift_k and -%sswift_eps0", pre, pre));
+  else if (table) PetscCall(PetscSNPrintf(opt, sizeof(opt), "the first stress of -%shardening_file", pre));
+  else PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%syield", pre));
+  PetscCheck(m->R0 < E, comm, PETSC_ERR_ARG_OUTOFRANGE,
+    "The initial yield stress %g GPa (%s) is not below the region's Young's modulus %g GPa: no solid yields at a strain "
+    "of 1. Stresses are in GPa (300 MPa is 0.3); a region that never yields is -%smodel elastic", (double)m->R0, opt,
+    (double)E, pre);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
