@@ -20,6 +20,7 @@ RUN_DIR/indent.h5, and writes into DIR (default RUN_DIR):
                        metres), centred on the indenter axis; a section's profile interpolated at each
                        pixel's distance from the axis
 
+A run without fields (-output_fields 0: no indent.h5) gets its two curves and a line saying what it lacks.
 Both curves start with the undeformed state (t = 0, depth 0, load 0), which the CSV does not list, so
 that NIGET's contact point (whose depth and force it subtracts from the curve) is the first touch.
 The run's pseudo-time t becomes seconds through --segment-seconds (a unit of t: the loading segment).
@@ -55,7 +56,7 @@ def run_options(run_dir, h5):
         except (OSError, ValueError) as e:
             raise InputError(f"{path}: not JSON ({e})") from None
         return summary.get("options", ""), summary.get("start_time")
-    if "options" in h5.attrs:
+    if h5 is not None and "options" in h5.attrs:
         return h5.attrs["options"].decode(), None
     raise InputError(f"{run_dir}: neither {SUMMARY_NAME} nor options in {H5_NAME}")
 
@@ -158,6 +159,39 @@ def interpolate(xy, height, tris, gx, gy):
 
 
 # -------------------------------------------------------------------------------------------- main
+def imprint_grid(args, curve, h5, h5_path):
+    """The top surface at the last step (xy, height: the mirrored vertices, or a section's pixels), its grid for
+    imprint.gsf and the grid's half-width."""
+    profile = top_profile(h5, h5_path)
+    if profile is None:
+        xy, height, tris, axes, tol = top_surface(h5, h5_path)
+        xy, tris, source, _ = mirror(xy, tris, axes, tol)
+        height = height[source]
+        reach = float(min(np.abs(xy[:, 0]).max(), np.abs(xy[:, 1]).max()))
+    else:
+        reach = float(profile[0].max())
+    if args.gsf_half_width is not None:
+        half = args.gsf_half_width
+    else:
+        # Three radii of the largest contact (area times the symmetry factor) hold the imprint and
+        # its pile-up; without an area, three depths.
+        a_max = float(curve["contact_area_nm2"].max()) if "contact_area_nm2" in curve else 0.0
+        radius = float(np.sqrt(a_max / np.pi)) if a_max > 0 else float(curve["depth_nm"].max())
+        half = min(3.0 * radius, 0.99 * reach)
+    gx = grid_axis(half, args.gsf_pixels)
+    if profile is None:
+        grid = interpolate(xy, height, tris, gx, gx)
+    else:
+        # the section revolved: the profile at each pixel's distance from the axis
+        X, Y = np.meshgrid(gx, gx)
+        grid = np.interp(np.hypot(X, Y), *profile, right=np.nan)
+        xy, height = np.column_stack([X.ravel(), Y.ravel()]), grid.ravel()
+    if np.isnan(grid).any():
+        raise InputError(f"imprint.gsf: {int(np.isnan(grid).sum())} grid nodes lie outside the top surface "
+                         f"(half-width {half:.6g} nm): give a smaller --gsf-half-width")
+    return xy, height, grid, half
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("run_dir", help="output directory of an indent run with an indenter")
@@ -176,38 +210,15 @@ def main(argv=None):
         if not os.path.isdir(args.run_dir):
             raise InputError(f"{args.run_dir}: no such run directory")
         curve = read_curve(os.path.join(args.run_dir, CSV_NAME), ("t", "depth_nm", "load_uN"))
-        h5, h5_path = open_fields(args.run_dir, H5_NAME, "the imprint needs -output_fields 1")
-        with h5:
-            options, start_time = run_options(args.run_dir, h5)
-            profile = top_profile(h5, h5_path)
-            if profile is None:
-                xy, height, tris, axes, tol = top_surface(h5, h5_path)
+        if os.path.exists(os.path.join(args.run_dir, H5_NAME)):
+            h5, h5_path = open_fields(args.run_dir, H5_NAME, "the imprint needs -output_fields 1")
+            with h5:
+                options, start_time = run_options(args.run_dir, h5)
+                surface = imprint_grid(args, curve, h5, h5_path)
+        else:  # a run without fields (-output_fields 0): its curves only
+            options, start_time = run_options(args.run_dir, None)
+            surface = None
         hold = option_value(options, "-load_hold", 0.0)
-        if profile is None:
-            xy, tris, source, _ = mirror(xy, tris, axes, tol)
-            height = height[source]
-            reach = float(min(np.abs(xy[:, 0]).max(), np.abs(xy[:, 1]).max()))
-        else:
-            reach = float(profile[0].max())
-        if args.gsf_half_width is not None:
-            half = args.gsf_half_width
-        else:
-            # Three radii of the largest contact (area times the symmetry factor) hold the imprint and
-            # its pile-up; without an area, three depths.
-            a_max = float(curve["contact_area_nm2"].max()) if "contact_area_nm2" in curve else 0.0
-            radius = float(np.sqrt(a_max / np.pi)) if a_max > 0 else float(curve["depth_nm"].max())
-            half = min(3.0 * radius, 0.99 * reach)
-        gx = grid_axis(half, args.gsf_pixels)
-        if profile is None:
-            grid = interpolate(xy, height, tris, gx, gx)
-        else:
-            # the section revolved: the profile at each pixel's distance from the axis
-            X, Y = np.meshgrid(gx, gx)
-            grid = np.interp(np.hypot(X, Y), *profile, right=np.nan)
-            xy, height = np.column_stack([X.ravel(), Y.ravel()]), grid.ravel()
-        if np.isnan(grid).any():
-            raise InputError(f"imprint.gsf: {int(np.isnan(grid).sum())} grid nodes lie outside the top surface "
-                             f"(half-width {half:.6g} nm): give a smaller --gsf-half-width")
     except InputError as e:
         print(f"export-curves: error: {e}", file=sys.stderr)
         return 2
@@ -216,6 +227,11 @@ def main(argv=None):
     full = with_origin(curve)
     write_niget(os.path.join(out, "curve.niget"), full, segment_indices(full, hold))
     write_hysitron(os.path.join(out, "curve_hysitron.txt"), full, args.segment_seconds, start_time)
+    if surface is None:
+        print(f"no imprint.xyz or imprint.gsf: {os.path.join(args.run_dir, H5_NAME)} is absent (the run wrote no "
+              "fields: -output_fields 0)")
+        return 0
+    xy, height, grid, half = surface
     write_xyz(os.path.join(out, "imprint.xyz"), xy, height)
     write_gsf(os.path.join(out, "imprint.gsf"), grid, half, "residual imprint height")
     return 0

@@ -13,7 +13,9 @@ scratch test) scratch.png: the normal and lateral forces against the sliding dis
 friction coefficient lateral / normal while sliding, with the Coulomb coefficient of the run's
 summary.json. Half (y >= 0) and quarter (x, y >= 0) models are mirrored for the pictures. An axisymmetric
 section (a 2D mesh, doc/axisymmetric.md) gives its imprint as a profile (imprint.csv with y = 0, imprint.png
-the height against r) and its slice is the section itself, mirrored about the axis. Exit status 2 on bad input.
+the height against r) and its slice is the section itself, mirrored about the axis. A run without fields
+(-output_fields 0: no indent.h5) gets its curve (and csm.png, scratch.png) and a line saying what it lacks.
+Exit status 2 on bad input.
 """
 import argparse
 import json
@@ -405,6 +407,10 @@ def load_inputs(run_dir):
     if not os.path.isdir(run_dir):
         raise InputError(f"{run_dir}: no such run directory")
     curve = read_curve(os.path.join(run_dir, CSV_NAME))
+    path = os.path.join(run_dir, SCRATCH_NAME)
+    scratch = read_scratch(path, SCRATCH_COLUMNS) if os.path.exists(path) else None
+    if not os.path.exists(os.path.join(run_dir, H5_NAME)):
+        return curve, None, scratch  # a run without fields: its curves only
     run = Run(os.path.join(run_dir, H5_NAME))
     run.rows = curve_rows(curve, run.steps, run.path)
     if run.rows[-1] != len(curve["depth_nm"]) - 1:
@@ -413,8 +419,6 @@ def load_inputs(run_dir):
     for name in ("von_mises", "plastic_strain"):
         if run.dataset(f"fields/{name}").shape[0] != run.nsteps:
             raise InputError(f"{run.path}: /fields/{name} and /fields/displacement have different step counts")
-    path = os.path.join(run_dir, SCRATCH_NAME)
-    scratch = read_scratch(path, SCRATCH_COLUMNS) if os.path.exists(path) else None
     return curve, run, scratch
 
 
@@ -431,10 +435,14 @@ def main(argv=None):
         return 2
     out = args.out or args.run_dir
     os.makedirs(out, exist_ok=True)
-    with run.h5:
-        plot_load_displacement(curve, os.path.join(out, "load_displacement.png"))
-        imprint(run, curve, out)
-        plot_stress_slice(run, curve, os.path.join(out, "stress_slice.png"))
+    plot_load_displacement(curve, os.path.join(out, "load_displacement.png"))
+    if run is None:
+        print(f"no imprint.csv, imprint.png or stress_slice.png: {os.path.join(args.run_dir, H5_NAME)} is absent "
+              "(the run wrote no fields: -output_fields 0)")
+    else:
+        with run.h5:
+            imprint(run, curve, out)
+            plot_stress_slice(run, curve, os.path.join(out, "stress_slice.png"))
     if os.path.exists(os.path.join(args.run_dir, "csm.csv")):
         plot_csm(args.run_dir, args.film_thickness, os.path.join(out, "csm.png"))
     if scratch is not None and len(scratch["distance_nm"]):

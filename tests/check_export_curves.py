@@ -321,6 +321,22 @@ def check_gwyddion(out):
               f"gwyddion --convert-to-gwy reads {name} (exit {res.returncode}, {size} bytes)")
 
 
+def check_without_fields(run_dir, bare):
+    """A run without fields (its CSV and summary.json, no indent.h5): the two curves, as the whole run's, and a
+    line naming what it lacks, exit 0."""
+    os.makedirs(bare)
+    for name in ("load_displacement.csv", "summary.json"):
+        shutil.copy(os.path.join(run_dir, name), bare)
+    res = subprocess.run([sys.executable, EXPORT, bare, "--segment-seconds", str(SECONDS)], capture_output=True,
+                         text=True)
+    check(res.returncode == 0 and "-output_fields 0" in res.stdout,
+          f"a run without fields: exit {res.returncode}, a line naming what it lacks ('{res.stdout.strip()}')")
+    for name in ("curve.niget", "curve_hysitron.txt"):
+        with open(os.path.join(bare, name), "rb") as a, open(os.path.join(os.path.dirname(bare), name), "rb") as b:
+            check(a.read() == b.read(), f"a run without fields: {name} equals the whole run's")
+    check(not os.path.exists(os.path.join(bare, "imprint.xyz")), "a run without fields: no imprint.xyz")
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("run_dir")
@@ -350,6 +366,7 @@ def main():
         check_gsf(os.path.join(out, "imprint.gsf"), p, keep, tris, curve)
     check_fit_reads(out, args.run_dir)
     check_gwyddion(out)
+    check_without_fields(args.run_dir, os.path.join(out, "bare"))
     bad = subprocess.run([sys.executable, EXPORT, os.path.join(out, "missing")], capture_output=True, text=True)
     check(bad.returncode == 2 and bad.stderr.startswith("export-curves: error:"),
           f"a missing run directory: exit {bad.returncode}, '{bad.stderr.strip()}'")

@@ -7,9 +7,11 @@ runs it with --out in a fresh temporary directory, then checks that the three PN
 imprint.csv has one finite row per top-surface vertex with heights equal to z + u_z - z_top of the
 last step (recomputed here from indent.h5), that the deepest point is below the surface and near the
 axis, that the written steps' fields are read beside their own rows of the curve (P_max's among them),
-and that a missing run directory is an error. Prints ok or FAIL: ..., exit status 0 or 1."""
+that a missing run directory is an error, and that the run's curve alone (indent.h5 left out: a run
+without fields) gives load_displacement.png, exit 0 and a line naming what it lacks. Prints ok or FAIL: ..., exit status 0 or 1."""
 import csv
 import os
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -128,6 +130,18 @@ def check_missing_dir(tmp):
     require(missing in res.stderr, f"the error for a missing run directory does not name it: {res.stderr.strip()!r}")
 
 
+def check_without_fields(tmp, run_dir):
+    bare = os.path.join(tmp, "bare")
+    os.makedirs(bare)
+    shutil.copy(os.path.join(run_dir, "load_displacement.csv"), bare)
+    out = os.path.join(tmp, "bare-out")
+    res = plot(bare, "--out", out)
+    require(res.returncode == 0, f"a run without fields: exit {res.returncode}: {res.stderr.strip()}")
+    require(os.path.isfile(os.path.join(out, "load_displacement.png")), "a run without fields: no curve drawn")
+    require(not os.path.exists(os.path.join(out, "imprint.csv")), "a run without fields: an imprint.csv written")
+    require("-output_fields 0" in res.stdout, f"a run without fields: no line says why ({res.stdout.strip()!r})")
+
+
 def main(run_dir):
     with tempfile.TemporaryDirectory(prefix="check-plots-") as tmp:
         out = os.path.join(tmp, "out")
@@ -137,6 +151,7 @@ def main(run_dir):
         rows, hmin, hmax, diff = check_imprint(out, run_dir)
         written, steps = check_field_rows(run_dir)
         check_missing_dir(tmp)
+        check_without_fields(tmp, run_dir)
     print(f"ok: 3 PNGs, imprint.csv {rows} rows, height {hmin:.4g} .. {hmax:.4g} nm, largest difference from "
           f"indent.h5 {diff:.2g} nm; fields of {written} of {steps} steps matched to their rows")
 
