@@ -133,7 +133,6 @@ static PetscErrorCode Analyse(void)
   int         code;
 
   PetscFunctionBeginUser;
-  PetscCall(IndOPParamsSetFromOptions(PETSC_COMM_WORLD, &p));
   PetscCall(PetscMemzero(&ind, sizeof(ind)));
   PetscOptionsBegin(PETSC_COMM_WORLD, NULL, IND_TITLE "Curve and indenter", "OP");
   PetscCall(IndOptionsString("-op_file", "Load-displacement CSV (columns depth_nm, load_uN)", "file", IND_REQUIRED,
@@ -150,6 +149,8 @@ static PetscErrorCode Analyse(void)
     "A calibrated area function instead of the indenter's: A = C0 h_c^2 + C1 h_c + C2 h_c^(1/2) + C3 h_c^(1/4) + ...",
     "C0,C1,... (nm^2, nm, ...)", NULL, fit.c, &fit.n, &has_fit));
   PetscOptionsEnd();
+  /* epsilon and beta follow the indenter; a calibrated area function is a Berkovich's unless the type is given */
+  PetscCall(IndOPParamsSetFromOptions(PETSC_COMM_WORLD, has_type ? ind.type : IND_INDENTER_BERKOVICH, &p));
   if (!has_fit) fit.n = 0;
   if (IndHelpListing()) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCheck(has_file, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "-op_file is required (a CSV with depth_nm and load_uN)");
@@ -173,10 +174,14 @@ static PetscErrorCode Analyse(void)
     path, (double)p.fraction);
   PetscCheck(code != 3, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE,
     "-op_fraction must lie in (0, 1], -op_epsilon and -op_beta be > 0");
-  PetscCheck(code == 0, PETSC_COMM_WORLD, PETSC_ERR_NOT_CONVERGED,
+  PetscCheck(code != 2, PETSC_COMM_WORLD, PETSC_ERR_NOT_CONVERGED,
     "'%s': the unloading branch is not a power law (fit gave alpha %g, m %g)", path, (double)r.alpha, (double)r.m);
-  PetscCheck(!fit.n || r.A > 0, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE,
+  PetscCheck(code != 4 || !fit.n || !(r.h_c > 0), PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE,
     "-op_area_coefficients give A(h_c) = %g nm^2 at h_c = %g nm: an area must be > 0", (double)r.A, (double)r.h_c);
+  PetscCheck(code != 4, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE,
+    "'%s': the contact depth h_c = h_max - epsilon P_max / S = %g nm (h_max %g nm, -op_epsilon %g) is at or below the "
+    "tip, where the indenter has no area; check -op_epsilon for this indenter", path, (double)r.h_c,
+    (double)r.h_max, (double)p.epsilon);
   for (PetscInt i = 1; i < n; ++i)
     if (P[i] > P[imax]) imax = i;
   PetscCall(PetscPrintf(PETSC_COMM_WORLD, "Oliver-Pharr analysis of %s (%s)\n", path,

@@ -49,6 +49,16 @@ indent_mpi_test(NAME axisymmetric_sphere_Q1_np2 NP 2 LABELS validation
 indent_mpi_test(NAME axisymmetric_sneddon_Q1_np2 NP 2 LABELS validation
   COMMAND $<TARGET_FILE:test_contact> ${AXI_ELASTIC} -indenter_type cone -expect_sneddon
   -output_dir ${CMAKE_CURRENT_BINARY_DIR}/axi_sneddon -output_overwrite)
+# Oliver-Pharr's epsilon and beta by the indenter's shape (cone 0.72 and 1, punch 1 and 1) recover the reduced
+# modulus of Sneddon's load of the same elastic run: the punch to 1e-8, the cone to 1% (tests/check_op_shapes.py).
+foreach(np 1 2)
+  indent_script_test(op_shapes_section_np${np} ${INDENT_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_op_shapes.py
+    --mpiexec ${MPIEXEC_EXECUTABLE} --indent $<TARGET_FILE:indent> --workdir ${CMAKE_CURRENT_BINARY_DIR}/op_shapes${np}
+    --np ${np} -- -mesh_file ${MESHDIR}/axi_elastic_quad.msh -domain_young 100 -domain_poisson 0.3 -bc_fixed bottom
+    -contact_gap reference -contact_friction 0 -formulation small -load_depth 100 -load_steps 5 -load_unload_steps 20
+    -load_unload_growth 1 -op_fraction 1 -op_poisson 0.3 -output_fields 0 -quiet)
+  set_tests_properties(op_shapes_section_np${np} PROPERTIES PROCESSORS ${np})
+endforeach()
 
 # Newton on a plastic section pulled to 2% (small strain) and 20% (finite strain) in 4 steps: the Jacobian with
 # its hoop terms (u_r / r in the strain, the hoop stress against N_a / r, at finite strain also in the geometric

@@ -29,7 +29,8 @@ typedef PetscReal (*IndAreaFn)(PetscReal h_c, void *ctx);
 void IndOPParamsDefault(IndOPParams *p);
 /* Analyses the curve (h[i], P[i]), i < n, in the order recorded: loading, then unloading after the
    largest load. Returns 0, or a positive code: 1 fewer than 3 points to fit, 2 the fit failed (not a
-   power law with 0 < m), 3 a bad parameter. */
+   power law with 0 < m), 3 a bad parameter, 4 the area function gives no area at h_c (h_c at or below the
+   tip: r holds the fit, S, h_c and A, but no H, E_r or E). */
 int IndOliverPharr(const PetscReal *h, const PetscReal *P, PetscInt n, const IndOPParams *p, IndAreaFn area,
   void *ctx, IndOPResult *r);
 /* The same quantities from a known contact area A at P_max (e.g. the simulation's true area). E is

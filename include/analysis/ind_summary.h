@@ -12,9 +12,10 @@
 
 typedef struct _p_IndSummary *IndSummary;
 
-/* Reads the -op_* options of the analysis (shared with indent-op), checking each. */
-PetscErrorCode IndOPParamsSetFromOptions(MPI_Comm comm, IndOPParams *params);
-PetscErrorCode IndSummaryCreate(MPI_Comm comm, IndSummary *summary);
+/* Reads the -op_* options of the analysis (shared with indent-op), checking each; epsilon and beta default to the
+   indenter shape's (IndIndenterOPConstants). */
+PetscErrorCode IndOPParamsSetFromOptions(MPI_Comm comm, IndIndenterType shape, IndOPParams *params);
+PetscErrorCode IndSummaryCreate(MPI_Comm comm, IndIndenterType shape, IndSummary *summary);
 PetscErrorCode IndSummaryDestroy(IndSummary *summary);
 PetscErrorCode IndSummaryAddPoint(IndSummary summary, const IndCurvePoint *point);
 /* The points so far (borrowed), and the Oliver-Pharr constants of -op_*. */

@@ -55,6 +55,13 @@ typedef struct {
    table's points are not as IndIndenter says. */
 int IndIndenterSetUp(IndIndenter *ind);
 
+/* Oliver and Pharr's constants for the shape: epsilon of h_c = h_max - epsilon P_max / S (0.72 for a cone, 1 for a
+   flat punch, 0.75 for the paraboloid that a sphere, a table and a pyramid's unloading resemble) and beta of
+   E_r = sqrt(pi) / (2 beta) S / sqrt(A) (1 for shapes of revolution, 1.034 for the three-sided pyramids and 1.012
+   for the four-sided one: King, Int. J. Solids Struct. 23 (1987) 1657; Oliver and Pharr, J. Mater. Res. 19 (2004)
+   3). */
+void IndIndenterOPConstants(IndIndenterType type, PetscReal *epsilon, PetscReal *beta);
+
 /* Signed gap (nm, positive open) of the point x and the unit normal n (gradient of the gap). */
 void IndIndenterGap(const IndIndenter *ind, const PetscReal x[3], PetscReal *gap, PetscReal n[3]);
 

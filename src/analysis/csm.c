@@ -55,7 +55,7 @@ PetscErrorCode IndCSMStiffness(IndSolver solver, IndBC bc, IndContact c, const I
   PetscCall(IndContactActiveForce(c, F, &Fz));
   pt->S   = Fz * 1e-3; /* nN/nm to uN/nm */
   pt->h_c = pt->S > 0 ? h - op->epsilon * P / pt->S : 0;
-  pt->A   = pt->h_c > 0 ? IndIndenterArea(IndContactGetIndenter(c), pt->h_c) : 0;
+  pt->A   = IndIndenterArea(IndContactGetIndenter(c), pt->h_c); /* 0 below the tip, but a punch's face */
   pt->H   = pt->A > 0 ? 1e3 * P / pt->A : 0;
   pt->E_r = pt->A > 0 ? 1e3 * sqrtpi / (2 * op->beta) * pt->S / PetscSqrtReal(pt->A) : 0;
   pt->a   = PetscSqrtReal(area_true / PETSC_PI);

@@ -128,6 +128,7 @@ int IndOliverPharr(const PetscReal *h, const PetscReal *P, PetscInt n, const Ind
   r->S   = r->m * r->alpha * PetscPowReal(r->h_max - r->h_f, r->m - 1);
   r->h_c = r->h_max - p->epsilon * r->P_max / r->S;
   r->A   = area(r->h_c, ctx);
+  if (!(r->A > 0)) return 4; /* h_c at or below the tip: H and E_r would divide by no area */
   IndOPFromArea(p, r, r->A, &r->H, &r->E_r, &r->E);
   return 0;
 }

@@ -5,18 +5,21 @@
 #include "ind_version.h"
 #include "ind_options.h"
 
-PetscErrorCode IndOPParamsSetFromOptions(MPI_Comm comm, IndOPParams *p)
+PetscErrorCode IndOPParamsSetFromOptions(MPI_Comm comm, IndIndenterType shape, IndOPParams *p)
 {
   PetscFunctionBeginUser;
   IndOPParamsDefault(p);
+  IndIndenterOPConstants(shape, &p->epsilon, &p->beta);
   PetscOptionsBegin(comm, NULL, IND_TITLE "Oliver-Pharr analysis (-op_*)", "OP");
   PetscCall(IndOptionsReal("-op_fraction", "Fit the unloading points with P >= (1 - fraction) P_max", "", NULL,
     p->fraction,
                            &p->fraction, NULL));
-  PetscCall(IndOptionsReal("-op_epsilon", "Contact-depth factor: h_c = h_max - epsilon P_max / S", "", NULL, p->epsilon,
-                           &p->epsilon, NULL));
-  PetscCall(IndOptionsReal("-op_beta", "Shape factor: E_r = sqrt(pi) / (2 beta) S / sqrt(A)", "", NULL, p->beta,
-    &p->beta, NULL));
+  PetscCall(IndOptionsReal("-op_epsilon",
+    "Contact-depth factor: h_c = h_max - epsilon P_max / S (default by the indenter: cone 0.72, flat 1, others 0.75)",
+    "", NULL, p->epsilon, &p->epsilon, NULL));
+  PetscCall(IndOptionsReal("-op_beta",
+    "Shape factor: E_r = sqrt(pi) / (2 beta) S / sqrt(A) (default by the indenter: berkovich and cube_corner 1.034, "
+    "vickers 1.012, shapes of revolution 1)", "", NULL, p->beta, &p->beta, NULL));
   PetscCall(IndOptionsReal("-op_indenter_modulus", "Indenter's Young's modulus (0 rigid, diamond 1141)", "GPa", NULL,
                            p->E_indenter, &p->E_indenter, NULL));
   PetscCall(IndOptionsReal("-op_indenter_poisson", "Indenter's Poisson's ratio", "", NULL, p->nu_indenter,
@@ -38,7 +41,7 @@ PetscErrorCode IndOPParamsSetFromOptions(MPI_Comm comm, IndOPParams *p)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode IndSummaryCreate(MPI_Comm comm, IndSummary *out)
+PetscErrorCode IndSummaryCreate(MPI_Comm comm, IndIndenterType shape, IndSummary *out)
 {
   IndSummary s;
 
@@ -47,7 +50,7 @@ PetscErrorCode IndSummaryCreate(MPI_Comm comm, IndSummary *out)
   s->comm = comm;
   s->cap  = 256;
   PetscCall(PetscMalloc1(s->cap, &s->pts));
-  PetscCall(IndOPParamsSetFromOptions(comm, &s->op));
+  PetscCall(IndOPParamsSetFromOptions(comm, shape, &s->op));
   s->min_contact_nodes = 50;
   PetscOptionsBegin(comm, NULL, IND_TITLE "Oliver-Pharr analysis of a run", "OP");
   PetscCall(IndOptionsInt("-op_min_contact_nodes",
@@ -245,6 +248,10 @@ PetscErrorCode IndSummaryFinish(IndSummary s, const IndIndenter *ind, const IndR
     PetscCall(PetscSNPrintf(why, sizeof(why), "the indenter slid (-scratch_length); it applies to a static indent"));
   else if (code == 1) PetscCall(PetscSNPrintf(why, sizeof(why),
     "fewer than 3 unloading points with P >= %g P_max: raise -load_unload_steps", (double)(1 - s->op.fraction)));
+  else if (code == 4) PetscCall(PetscSNPrintf(why, sizeof(why),
+    "H and E_r withheld: the contact depth h_c = h_max - epsilon P_max / S = %.6g nm (h_max %.6g nm, -op_epsilon "
+    "%g, S %.6g uN/nm) is at or below the tip, where the indenter has no area; check -op_epsilon for this indenter",
+    (double)r.h_c, (double)r.h_max, (double)s->op.epsilon, (double)r.S));
   else if (code) PetscCall(PetscSNPrintf(why, sizeof(why), "the unloading branch is not a power law"));
   else IndOPFromArea(&s->op, &r, pmax->area, &Hs, &Ers, &Es);
   if (!code && info->contact) {
@@ -340,7 +347,11 @@ PetscErrorCode IndSummaryFinish(IndSummary s, const IndIndenter *ind, const IndR
     PetscCall(WriteProvenance(fp, info));
     fprintf(fp, "  \"indenter\": \"%s\",\n  \"op_fraction\": %.10g,\n  \"op_epsilon\": %.10g,\n  \"op_beta\": %.10g",
       IndIndenterTypes[ind->type], (double)s->op.fraction, (double)s->op.epsilon, (double)s->op.beta);
-    for (PetscInt k = 0; k < ne; ++k) fprintf(fp, ",\n  \"%s\": %.12g", e[k].key, (double)e[k].value);
+    /* JSON has no inf or nan (E is NaN when E_r exceeds what the indenter allows): null */
+    for (PetscInt k = 0; k < ne; ++k) {
+      if (PetscIsInfOrNanReal(e[k].value)) fprintf(fp, ",\n  \"%s\": null", e[k].key);
+      else fprintf(fp, ",\n  \"%s\": %.12g", e[k].key, (double)e[k].value);
+    }
     if (code) {
       /* the results a reader looks for are there, empty, with the reason */
       const char *const withheld[] = {"H_GPa", "E_r_GPa", "E_GPa", "H_true_GPa", "E_r_true_GPa"};

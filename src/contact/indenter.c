@@ -6,6 +6,14 @@ const char *const IndIndenterTypes[] = {"sphere", "cone", "berkovich", "vickers"
 
 static const PetscReal deg = PETSC_PI / 180.0;
 
+void IndIndenterOPConstants(IndIndenterType type, PetscReal *epsilon, PetscReal *beta)
+{
+  *epsilon = type == IND_INDENTER_CONE ? 0.72 : type == IND_INDENTER_FLAT ? 1.0 : 0.75;
+  *beta    = type == IND_INDENTER_BERKOVICH || type == IND_INDENTER_CUBE_CORNER ? 1.034
+             : type == IND_INDENTER_VICKERS                                       ? 1.012
+                                                                                 : 1.0;
+}
+
 int IndIndenterSetUp(IndIndenter *ind)
 {
   PetscReal standard = 0;
@@ -339,12 +347,13 @@ PetscReal IndIndenterArea(const IndIndenter *ind, PetscReal hc)
 {
   const PetscReal R = ind->radius, a = ind->angle;
 
+  /* a loaded punch touches with its whole face: its contact depth (0 by Oliver and Pharr's epsilon = 1, or a
+     round-off below) does not change its area */
+  if (ind->type == IND_INDENTER_FLAT) return PETSC_PI * R * R;
   if (hc <= 0) return 0.0;
   switch (ind->type) {
   case IND_INDENTER_TABLE:
     return PETSC_PI * PetscSqr(ProfileRadius(ind, hc));
-  case IND_INDENTER_FLAT:
-    return PETSC_PI * R * R;
   case IND_INDENTER_SPHERE:
     return hc >= R ? PETSC_PI * R * R : PETSC_PI * (2 * R * hc - hc * hc);
   case IND_INDENTER_CONE: {

@@ -132,7 +132,7 @@ PetscErrorCode IndAppCreate(MPI_Comm comm, IndApp *out)
   PetscCall(IndOutputCreate(app->mesh, app->disc, &app->output));
   PetscCall(IndOutputSetContact(app->output, app->contact));
   PetscCall(IndOutputSetDensifying(app->output, IndMaterialsAreDensifying(app->mats)));
-  if (app->contact) PetscCall(IndSummaryCreate(comm, &app->summary));
+  if (app->contact) PetscCall(IndSummaryCreate(comm, IndContactGetIndenter(app->contact)->type, &app->summary));
   PetscCall(PetscObjectSetName((PetscObject)app->U, "displacement"));
   PetscCall(VecZeroEntries(app->U));
   PetscCall(VecDuplicate(app->U, &app->Uprev));
