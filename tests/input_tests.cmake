@@ -297,6 +297,24 @@ add_test(NAME output_size_warning COMMAND ${INDENT} -dm_plex_box_faces 2,2,2 -qu
   -output_size_warning 1e-6 -output_dir ${BAD_DIR}/size_warning -output_overwrite)
 set_tests_properties(output_size_warning PROPERTIES ENVIRONMENT "${INDENT_TEST_ENV}" LABELS "input;faults"
   PASS_REGULAR_EXPRESSION "indent: warning: the field output would take about [0-9.e+-]+ GB \\(up to [0-9]+ steps")
+# Linear elements lock as nu nears 1/2 (locking.c): a region at or above their Poisson's ratio is announced,
+# named, with the element; second-order hexahedra and a ratio below the element's are not.
+set(LOCKING_RE "indent: warning: region 'film' \\(nu 0.45\\) on P1 tetrahedra, which lock as a material nears")
+add_test(NAME locking_warning_tets_np2 COMMAND ${INDENT_NP2} ${PAPER_COARSE} -film_poisson 0.45 -load_depth 20
+  -output_dir ${BAD_DIR}/locking_tets -output_overwrite)
+set_tests_properties(locking_warning_tets_np2 PROPERTIES ENVIRONMENT "${INDENT_TEST_ENV}" LABELS "input;faults"
+  PROCESSORS 2 PASS_REGULAR_EXPRESSION "${LOCKING_RE}")
+add_test(NAME locking_warning_hex COMMAND ${INDENT} -dm_plex_box_faces 2,2,2 -quiet -domain_young 100 -domain_poisson
+  0.45 -formulation small ${SPHERE} -output_fields 0 -output_dir ${BAD_DIR}/locking_hex -output_overwrite)
+set_tests_properties(locking_warning_hex PROPERTIES ENVIRONMENT "${INDENT_TEST_ENV}" LABELS "input;faults"
+  PASS_REGULAR_EXPRESSION "indent: warning: region 'domain' \\(nu 0.45\\) on Q1 hexahedra, which lock")
+add_test(NAME locking_none_q2 COMMAND ${INDENT} -dm_plex_box_faces 2,2,2 -quiet -domain_young 100 -domain_poisson 0.49
+  -formulation small ${SPHERE} -disc_degree 2 -output_fields 0 -output_dir ${BAD_DIR}/locking_q2 -output_overwrite)
+add_test(NAME locking_none_tets_np2 COMMAND ${INDENT_NP2} ${PAPER_COARSE} -film_poisson 0.39 -substrate_poisson 0.39
+  -load_depth 20 -output_dir ${BAD_DIR}/locking_none_tets -output_overwrite)
+set_tests_properties(locking_none_q2 locking_none_tets_np2 PROPERTIES ENVIRONMENT "${INDENT_TEST_ENV}"
+  LABELS "input;faults" FAIL_REGULAR_EXPRESSION "lock as a material")
+set_tests_properties(locking_none_tets_np2 PROPERTIES PROCESSORS 2)
 indent_script_test(bad_depth_through_box ${EXPECT_ERROR}
   "-load_depth 2 nm goes through the body: .*the body is 1 nm thick"
   ${INDENT} ${OK_BOX} ${ELASTIC} ${SPHERE} -load_depth 2)

@@ -28,6 +28,11 @@ PetscBool      IndMaterialsHaveBackStress(IndMaterials mats);
 PetscBool      IndMaterialsAreDensifying(IndMaterials mats);
 PetscErrorCode IndMaterialsCreate(IndMesh mesh, IndDisc disc, IndMaterials *mats);
 PetscErrorCode IndMaterialsDestroy(IndMaterials *mats);
+/* The Poisson's ratio from which the elements of this degree and shape lock (0.5: they do not), and the text of the
+   warning for the regions at or above it (text[0] = 0: none), naming them (locking.c). */
+PetscReal      IndLockingPoisson(PetscInt degree, PetscBool simplex, PetscBool axisymmetric);
+void           IndMaterialsCheckLocking(IndMaterials mats, PetscInt degree, PetscBool simplex, PetscBool axisymmetric,
+                                        char text[], size_t len);
 /* The regions' materials, in the mesh's order of volume regions. */
 PetscInt       IndMaterialsGetCount(IndMaterials mats);
 const IndMaterial *IndMaterialsGet(IndMaterials mats, PetscInt k);

@@ -157,6 +157,13 @@ PetscErrorCode IndAppCreate(MPI_Comm comm, IndApp *out)
     left += ExtraEdgeSteps(app, IND_MAX_OUTPUT_STEPS + 1) / every;
     PetscCall(IndOutputCheckSize(app->output, PetscMin(left, IND_MAX_OUTPUT_STEPS + 1), &app->warnings));
   }
+  if (!IndHelpListing()) { /* not on the stand-in mesh of a listing or of the options' check before meshing */
+    const IndDiscLayout *L;
+    char                 text[IND_WARNING_LEN];
+    PetscCall(IndDiscGetLayout(app->disc, &L));
+    IndMaterialsCheckLocking(app->mats, L->degree, L->simplex, L->axisymmetric, text, sizeof(text));
+    if (text[0]) PetscCall(IndWarningsAdd(comm, &app->warnings, "locking", PETSC_TRUE, text));
+  }
   PetscCall(VecGetSize(app->U, &ndof));
   {
     const IndDiscLayout *L;
