@@ -315,6 +315,15 @@ add_test(NAME locking_none_tets_np2 COMMAND ${INDENT_NP2} ${PAPER_COARSE} -film_
 set_tests_properties(locking_none_q2 locking_none_tets_np2 PROPERTIES ENVIRONMENT "${INDENT_TEST_ENV}"
   LABELS "input;faults" FAIL_REGULAR_EXPRESSION "lock as a material")
 set_tests_properties(locking_none_tets_np2 PROPERTIES PROCESSORS 2)
+# A symmetry plane that misses the indenter's axis mirrors the indenter: a pair of indents is announced, an
+# overlapping pair refused.
+bad_np2(bad_mirror_overlap_np2 ${EXPECT_ERROR} --fresh ${BAD_DIR}/mirror_overlap
+  "-bc_symmetry 'symmetry' \\(the plane y = 0 nm\\) cuts the indenter, whose axis is 100 nm from it"
+  ${INDENT_NP2} ${PAPER_COARSE} -indenter_axis 0,100 -output_dir ${BAD_DIR}/mirror_overlap)
+add_test(NAME mirror_pair_warning_np2 COMMAND ${INDENT_NP2} ${PAPER_COARSE} -indenter_axis 0,400 -load_depth 20
+  -output_dir ${BAD_DIR}/mirror_pair -output_overwrite)
+set_tests_properties(mirror_pair_warning_np2 PROPERTIES ENVIRONMENT "${INDENT_TEST_ENV}" LABELS "input;faults"
+  PROCESSORS 2 PASS_REGULAR_EXPRESSION "indent: warning: -bc_symmetry 'symmetry' \\(the plane y = 0 nm\\) misses the indenter's axis \\(0, 400 nm\\): the model holds the indenter's mirror image too, 800 nm away")
 indent_script_test(bad_depth_through_box ${EXPECT_ERROR}
   "-load_depth 2 nm goes through the body: .*the body is 1 nm thick"
   ${INDENT} ${OK_BOX} ${ELASTIC} ${SPHERE} -load_depth 2)

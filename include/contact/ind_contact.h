@@ -154,6 +154,11 @@ PetscErrorCode IndContactRollback(IndContact contact);
 /* Verdicts on a run (contact_checks.c). An error (PETSC_ERR_USER_INPUT) when no node (touching, all ranks)
    is in contact at the end of loading, at depth_max: the indenter never touched the surface. */
 PetscErrorCode IndContactCheckTouched(IndContact contact, PetscReal depth_max, PetscInt touching);
+/* warning[0] = 0, or the text: a vertical symmetry plane of bc misses the indenter's axis, so that the model holds
+   the indenter's mirror image too (a pair of indents), and the load is one indenter's. An error (PETSC_ERR_USER_INPUT)
+   when the plane cuts the indenter at depth_max (the edge of its contact with the undeformed surface): the pair
+   would overlap. */
+PetscErrorCode IndContactCheckMirror(IndContact contact, IndBC bc, PetscReal depth_max, char warning[], size_t len);
 /* warning[0] = 0, or the text: nodes on the edge of the modelled surface touch the indenter. */
 PetscErrorCode IndContactCheckEdge(IndContact contact, PetscReal depth, char warning[], size_t len);
 /* why[0] = 0, or why H and E_r are withheld: A(h_c) of the Oliver-Pharr analysis exceeds the surface's projected

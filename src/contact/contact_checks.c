@@ -14,6 +14,41 @@ PetscErrorCode IndContactCheckTouched(IndContact c, PetscReal depth_max, PetscIn
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+PetscErrorCode IndContactCheckMirror(IndContact c, IndBC bc, PetscReal depth_max, char warning[], size_t len)
+{
+  const PetscReal edge = IndIndenterEdgeRadius(&c->indenter, depth_max);
+  const IndBCSpec *spec;
+  PetscInt         nspec;
+
+  PetscFunctionBeginUser;
+  warning[0] = 0;
+  if (c->axisymmetric) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(IndBCGetSpecs(bc, &nspec, &spec));
+  for (PetscInt k = 0; k < nspec; ++k) {
+    PetscBool sym;
+    PetscCall(PetscStrcmp(spec[k].option, "-bc_symmetry", &sym));
+    for (int a = 0; a < 2 && sym; ++a) {
+      const PetscReal gap = c->indenter.axis[a] - spec[k].plane;
+      if (spec[k].mask != (1 << a) || IndContactPlaneThroughAxis(&spec[k], &c->indenter)) continue;
+      PetscCheck(PetscAbsReal(gap) >= edge, c->comm, PETSC_ERR_USER_INPUT,
+                 "-bc_symmetry '%s' (the plane %c = %.6g nm) cuts the indenter, whose axis is %.6g nm from it and whose "
+                 "contact reaches %.6g nm from the axis at -load_depth %.6g nm: the model would hold it and its mirror "
+                 "image overlapping; put -indenter_axis on the plane (a half model) or %.6g nm or more from it (a pair "
+                 "of indents)",
+                 spec[k].label, "xy"[a], (double)spec[k].plane, (double)PetscAbsReal(gap), (double)edge,
+                 (double)depth_max, (double)edge);
+      PetscCall(PetscSNPrintf(warning, len,
+                              "-bc_symmetry '%s' (the plane %c = %.6g nm) misses the indenter's axis (%.6g, %.6g nm): "
+                              "the model holds the indenter's mirror image too, %.6g nm away (a pair of indents), and "
+                              "the load is one indenter's; put the axis on the plane for a half model",
+                              spec[k].label, "xy"[a], (double)spec[k].plane, (double)c->indenter.axis[0],
+                              (double)c->indenter.axis[1], (double)(2 * PetscAbsReal(gap))));
+      PetscFunctionReturn(PETSC_SUCCESS);
+    }
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode IndContactCheckEdge(IndContact c, PetscReal depth, char warning[], size_t len)
 {
   PetscInt touching = 0;

@@ -163,6 +163,8 @@ PetscErrorCode IndAppCreate(MPI_Comm comm, IndApp *out)
     PetscCall(IndDiscGetLayout(app->disc, &L));
     IndMaterialsCheckLocking(app->mats, L->degree, L->simplex, L->axisymmetric, text, sizeof(text));
     if (text[0]) PetscCall(IndWarningsAdd(comm, &app->warnings, "locking", PETSC_TRUE, text));
+    if (app->contact) PetscCall(IndContactCheckMirror(app->contact, app->bc, app->path.depth_max, text, sizeof(text)));
+    if (app->contact && text[0]) PetscCall(IndWarningsAdd(comm, &app->warnings, "mirror", PETSC_TRUE, text));
   }
   PetscCall(VecGetSize(app->U, &ndof));
   {
