@@ -427,6 +427,18 @@ def noise_sigma(args, fit):
     return np.concatenate(parts)
 
 
+def strict_json(value):
+    """value with every non-finite float as None: JSON has no NaN or Infinity (an interval of a parameter the
+    curves cannot determine, a singular Jacobian's condition), and strict readers (jq, JavaScript) refuse them."""
+    if isinstance(value, dict):
+        return {k: strict_json(v) for k, v in value.items()}
+    if isinstance(value, (list, tuple)):
+        return [strict_json(v) for v in value]
+    if isinstance(value, (float, np.floating)):
+        return float(value) if np.isfinite(value) else None
+    return value
+
+
 def write_outputs(args, fit, sol, res):
     out = args.out
     u = sol.x
@@ -471,7 +483,7 @@ def write_outputs(args, fit, sol, res):
                              f"measured depth {m.depth:.4g} nm, RMS height difference {rms_nm:.3g} nm "
                              f"({100 * rms_nm / m.depth:.3g}% of it); measured and fitted in {path}")
     with open(os.path.join(out, "result.json"), "w") as f:
-        json.dump(result, f, indent=1)
+        json.dump(strict_json(result), f, indent=1, allow_nan=False)
     what = "load error / P_max" + (" and height error / imprint depth" if result["imprints"] else "")
     lines = [f"indent-fit: {len(fit.curves)} curve(s), {len(result['imprints'])} imprint(s), {len(fit.params)} "
              f"parameter(s); {sol.message}", f"misfit (weighted RMS {what}): {100 * result['misfit_rms']:.4g}%", "",

@@ -175,7 +175,7 @@ def roundtrip(args, work):
     if not res["distinguishable"]:
         raise SystemExit("FAIL: cone and sphere together were called indistinguishable")
     for k, v in res["parameters"].items():
-        if not v["ci95"] > 0:
+        if not (v["ci95"] is not None and v["ci95"] > 0):  # null: an interval without bound
             raise SystemExit(f"FAIL: no confidence interval for {k}")
     # Dao's start from the cone curve: E from its unloading, yield on the valley of its sigma_0.033
     out = os.path.join(work, "fit_dao_start")
