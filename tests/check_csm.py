@@ -5,8 +5,12 @@
   curve there (central difference of two more runs at D -/+ 0.1 nm), E_r at every depth is E*, and S is
   2 E* a with a from the contact nodes (a quantised by the mesh);
   --film ESTAR: on a film on a stiffer substrate E_r starts near the film's E* and rises with depth.
+H and E_r of a contact too few nodes wide (-op_min_contact_nodes) are empty cells: they must be the shallowest
+rows only, with at least 3 rows resolved; the checks above are made on the resolved rows. With --expect-withheld
+at least one row must be withheld.
 
-  check_csm.py --mpiexec M --indent BIN --workdir D --depth D (--hertz ESTAR | --film ESTAR) -- <indent options>
+  check_csm.py --mpiexec M --indent BIN --workdir D --depth D [--hertz ESTAR] [--film ESTAR] [--expect-withheld]
+               -- <indent options>
 """
 import os
 import shutil
@@ -29,6 +33,7 @@ def main():
     ap.add_argument("--depth", type=float, required=True)
     ap.add_argument("--hertz", type=float)
     ap.add_argument("--film", type=float)
+    ap.add_argument("--expect-withheld", action="store_true")
     args = ap.parse_args(argv)
     shutil.rmtree(args.workdir, ignore_errors=True)
     run = os.path.join(args.workdir, "csm")
@@ -41,6 +46,13 @@ def main():
               f"{r['H_GPa']:7.3f} "
               f"{r['E_r_GPa']:8.3f} {r['contact_radius_nm']:7.2f}")
     failed = 0
+    resolved = np.isfinite(c["E_r_GPa"]) & np.isfinite(c["H_GPa"])
+    withheld = int((~resolved).sum())
+    print(f"H and E_r withheld at {withheld} of {len(c)} depths")
+    if withheld and resolved[:withheld].any() or resolved.sum() < 3 or (args.expect_withheld and not withheld):
+        print("FAIL: withheld rows are not the shallowest, fewer than 3 rows resolved, or none withheld where expected")
+        return 1
+    c = c[resolved]
     if args.hertz:
         loads = []
         # An elastic body pressed without friction has one equilibrium at each depth, whatever the path: one step

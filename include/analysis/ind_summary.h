@@ -21,6 +21,8 @@ PetscErrorCode IndSummaryAddPoint(IndSummary summary, const IndCurvePoint *point
 /* The points so far (borrowed), and the Oliver-Pharr constants of -op_*. */
 PetscErrorCode IndSummaryGetPoints(IndSummary summary, PetscInt *n, const IndCurvePoint **points);
 const IndOPParams *IndSummaryGetOPParams(IndSummary summary);
+/* -op_min_contact_nodes: nodes in contact (whole indent) below which H and E_r are withheld. */
+PetscInt           IndSummaryGetMinContactNodes(IndSummary summary);
 /* Its part of the state (ind_state.h): the curve so far. */
 PetscErrorCode IndSummaryState(void *summary, IndStateFile file);
 /* Where and how the run was made, for the summary's provenance. */

@@ -73,12 +73,14 @@ PetscErrorCode IndCSMStiffness(IndSolver solver, IndBC bc, IndContact c, const I
 PetscErrorCode IndCSMWrite(MPI_Comm comm, const char dir[], PetscInt step, PetscReal h, PetscReal P,
   const IndCSMPoint *pt)
 {
-  char line[512];
+  char line[512], H[32] = "", Er[32] = "";
 
   PetscFunctionBeginUser;
-  PetscCall(PetscSNPrintf(line, sizeof(line), "%" PetscInt_FMT ",%.12g,%.12g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g", step,
-                          (double)h, (double)P, (double)pt->S, (double)pt->h_c, (double)pt->A, (double)pt->H,
-                          (double)pt->E_r, (double)pt->a));
+  /* withheld values (NaN) are empty cells, which spreadsheets and numpy read as missing */
+  if (!PetscIsInfOrNanReal(pt->H)) PetscCall(PetscSNPrintf(H, sizeof(H), "%.10g", (double)pt->H));
+  if (!PetscIsInfOrNanReal(pt->E_r)) PetscCall(PetscSNPrintf(Er, sizeof(Er), "%.10g", (double)pt->E_r));
+  PetscCall(PetscSNPrintf(line, sizeof(line), "%" PetscInt_FMT ",%.12g,%.12g,%.10g,%.10g,%.10g,%s,%s,%.10g", step,
+                          (double)h, (double)P, (double)pt->S, (double)pt->h_c, (double)pt->A, H, Er, (double)pt->a));
   PetscCall(IndStepCSVAppend(comm, dir, IND_CSM_FILE, CSM_HEADER, line));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

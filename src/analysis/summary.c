@@ -96,6 +96,7 @@ PetscErrorCode IndSummaryGetPoints(IndSummary s, PetscInt *n, const IndCurvePoin
 }
 
 IND_GETTER(const IndOPParams *, IndSummaryGetOPParams, IndSummary, &o->op)
+IND_GETTER(PetscInt, IndSummaryGetMinContactNodes, IndSummary, o->min_contact_nodes)
 
 #define CURVE_WIDTH 16 /* reals per IndCurvePoint in the state */
 

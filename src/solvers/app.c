@@ -420,14 +420,28 @@ PetscErrorCode IndAppRun(IndApp app)
         r.contact.contact > 0 &&
         lp->accepted % app->csm_every == 0) {
       IndCSMPoint csm;
+      char why[512];
       PetscCall(IndCSMStiffness(app->solver, app->bc, app->contact, IndSummaryGetOPParams(app->summary), app->U,
                                 r.depth, r.contact.load * 1e-3, r.contact.area, &csm));
+      /* as the summary's: a contact of a few nodes does not resolve the area H and E_r divide by */
+      IndContactCheckResolved(app->contact, r.contact.contact, IndSummaryGetMinContactNodes(app->summary), why,
+                              sizeof(why));
+      if (why[0] || !(csm.A > 0)) {
+        char text[IND_WARNING_LEN];
+        csm.H = csm.E_r = NAN;
+        PetscCall(PetscSNPrintf(text, sizeof(text), "csm.csv leaves H and E_r empty where fewer than "
+          "-op_min_contact_nodes %" PetscInt_FMT " nodes touch the indenter over the whole indent or h_c has no area "
+          "(from depth %.6g nm)", IndSummaryGetMinContactNodes(app->summary), (double)r.depth));
+        PetscCall(IndWarningsAdd(app->comm, &app->warnings, "csm_withheld", PETSC_FALSE, text));
+      }
       if (app->rundir.ready) PetscCall(IndCSMWrite(app->comm, app->rundir.dir, lp->accepted, r.depth,
         r.contact.load * 1e-3, &csm));
-      if (!app->quiet)
+      if (!app->quiet && PetscIsInfOrNanReal(csm.H))
+        PetscCall(PetscPrintf(app->comm, "  stiffness S %.6g uN/nm, h_c %.5g nm, H and E_r withheld (%" PetscInt_FMT
+          " nodes in contact)\n", (double)csm.S, (double)csm.h_c, r.contact.contact));
+      else if (!app->quiet)
         PetscCall(PetscPrintf(app->comm, "  stiffness S %.6g uN/nm, h_c %.5g nm, H %.5g GPa, E_r %.5g GPa\n",
-          (double)csm.S,
-                              (double)csm.h_c, (double)csm.H, (double)csm.E_r));
+          (double)csm.S, (double)csm.h_c, (double)csm.H, (double)csm.E_r));
     }
     if (app->monitor) PetscCall(app->monitor(app, &r, app->monitor_ctx));
     if (lp->accepted == app->stop_after) IndSignalsRaise(SIGTERM);
