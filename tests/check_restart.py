@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Checkpoint and restart: a run stopped after a step (by -checkpoint_stop_after_step, or by a real
 signal sent to mpiexec) and continued with -restart, on the same or another rank count, gives the
-uninterrupted run's curve, contact-node counts, summary and final fields; a restart with other model
+uninterrupted run's curve, contact-node counts, summary (its warnings too) and final fields; a restart with other model
 options or another mesh is refused with one line naming the difference, leaving the files untouched.
 
   check_restart.py --mpiexec M --indent BIN --workdir D [--np A,B] [--stop K] [--signal USR1]
@@ -104,6 +104,8 @@ def compare(ref, got, rtol, label):
             bad.append(f"summary {k} {sb[k]} vs {sa[k]}")
     if not sb.get("restarted"):
         bad.append("summary.json does not record the restart")
+    if sa.get("warnings") != sb.get("warnings"):  # those of the steps before the restart kept by the checkpoint
+        bad.append(f"summary warnings {sb.get('warnings')} vs {sa.get('warnings')}")
     for name in ("checkpoint.h5", "checkpoint.previous.h5"):
         if os.path.exists(os.path.join(got, name)):
             bad.append(f"the finished run left {name}")

@@ -2,6 +2,7 @@
 /* Warnings of a run (run_checks.c): printed once ("indent: warning: ..." on rank 0, stderr) and kept,
    once per kind, for the summary (summary.json "warnings"). Plain data: no dependency on the app. */
 #include "ind_common.h"
+#include "ind_state.h"
 
 #define IND_MAX_WARNINGS 16
 #define IND_WARNING_LEN  512
@@ -17,3 +18,7 @@ typedef struct {
    be the same on every rank). */
 PetscErrorCode IndWarningsAdd(MPI_Comm comm, IndWarnings *warnings, const char key[], PetscBool print,
   const char text[]);
+/* The warnings' part of a checkpoint (an IndStatePart's transfer, obj an IndWarnings): a restarted run's summary
+   keeps those of the steps before the restart. Read back, they join the list (without being printed again); a
+   checkpoint written before warnings were kept has none to add. */
+PetscErrorCode IndWarningsState(void *obj, IndStateFile file);

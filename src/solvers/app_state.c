@@ -31,6 +31,7 @@ PetscErrorCode IndAppGetStateParts(IndApp app, PetscInt *n, IndStatePart parts[I
   if (app->control) parts[(*n)++] = (IndStatePart){"load_control", IndLoadControlState, app->control};
   if (app->summary) parts[(*n)++] = (IndStatePart){"curve", IndSummaryState, app->summary};
   parts[(*n)++] = (IndStatePart){"output", IndOutputState, app->output};
+  parts[(*n)++] = (IndStatePart){"warnings", IndWarningsState, &app->warnings};
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -1,5 +1,6 @@
 #include <stdio.h>
 #include <string.h>
+#include <stdlib.h>
 #include "app_impl.h"
 #include "ind_runchecks.h"
 
@@ -20,6 +21,43 @@ PetscErrorCode IndWarningsAdd(MPI_Comm comm, IndWarnings *w, const char key[], P
     w->n++;
   }
   if (print) PetscCall(PetscFPrintf(comm, PETSC_STDERR, "indent: warning: %s\n", text));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode IndWarningsState(void *obj, IndStateFile f)
+{
+  IndWarnings *w = (IndWarnings *)obj;
+  char         count[32], name[48];
+  PetscInt     n = w->n;
+
+  PetscFunctionBeginUser;
+  if (IndStateReading(f)) {
+    PetscViewer v;
+    PetscBool   has;
+    PetscCall(IndStateFileGetViewer(f, &v));
+    PetscCall(PetscViewerHDF5HasAttribute(v, "/", "warning_count", &has));
+    if (!has) PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  PetscCall(PetscSNPrintf(count, sizeof(count), "%" PetscInt_FMT, n));
+  PetscCall(IndStateString(f, "warning_count", count, sizeof(count)));
+  if (!IndStateReading(f)) {
+    for (PetscInt k = 0; k < n; ++k) {
+      PetscCall(PetscSNPrintf(name, sizeof(name), "warning_key_%" PetscInt_FMT, k));
+      PetscCall(IndStateString(f, name, w->key[k], sizeof(w->key[k])));
+      PetscCall(PetscSNPrintf(name, sizeof(name), "warning_text_%" PetscInt_FMT, k));
+      PetscCall(IndStateString(f, name, w->text[k], sizeof(w->text[k])));
+    }
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  n = (PetscInt)strtol(count, NULL, 10);
+  for (PetscInt k = 0; k < n; ++k) {
+    char key[sizeof(w->key[0])], text[sizeof(w->text[0])];
+    PetscCall(PetscSNPrintf(name, sizeof(name), "warning_key_%" PetscInt_FMT, k));
+    PetscCall(IndStateString(f, name, key, sizeof(key)));
+    PetscCall(PetscSNPrintf(name, sizeof(name), "warning_text_%" PetscInt_FMT, k));
+    PetscCall(IndStateString(f, name, text, sizeof(text)));
+    PetscCall(IndWarningsAdd(PETSC_COMM_SELF, w, key, PETSC_FALSE, text));
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
