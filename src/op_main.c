@@ -192,8 +192,13 @@ static PetscErrorCode Analyse(void)
     (double)r.alpha, (double)r.h_f, (double)r.m, (double)r.rms));
   PetscCall(PetscPrintf(PETSC_COMM_WORLD, "  S %.10g uN/nm, h_c %.10g nm (h_c/h_max %.4f), A(h_c) %.10g nm^2\n",
     (double)r.S, (double)r.h_c, (double)(r.h_c / r.h_max), (double)r.A));
-  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "  H %.10g GPa, E_r %.10g GPa, E %.10g GPa (nu %.3g, %s indenter)\n",
-    (double)r.H, (double)r.E_r, (double)r.E, (double)p.nu_sample, p.E_indenter > 0 ? "elastic" : "rigid"));
+  if (PetscIsInfOrNanReal(r.E))
+    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "  H %.10g GPa, E_r %.10g GPa, E withheld: E_r is stiffer than the indenter "
+      "allows (-op_indenter_modulus %g GPa, -op_indenter_poisson %g)\n", (double)r.H, (double)r.E_r,
+      (double)p.E_indenter, (double)p.nu_indenter));
+  else
+    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "  H %.10g GPa, E_r %.10g GPa, E %.10g GPa (nu %.3g, %s indenter)\n",
+      (double)r.H, (double)r.E_r, (double)r.E, (double)p.nu_sample, p.E_indenter > 0 ? "elastic" : "rigid"));
   if (A[imax] > 0) {
     PetscReal H, Er, E;
     IndOPFromArea(&p, &r, A[imax], &H, &Er, &E);

@@ -12,7 +12,7 @@ Oliver-Pharr exact, within 1e-8), for the cone P = (2 / pi) E_r tan(alpha) h^2 (
 0.72 rounds Sneddon's 2 (1 - 2 / pi) = 0.727). With the Berkovich's constants (0.75, 1.034), the defaults
 before, the punch's E_r came out 3.3% low and the cone's 1.5%. The punch again with an indenter of 100 GPa
 (-op_indenter_modulus), too compliant for this E_r: summary.json must still be JSON, with E_GPa null (it held
-'nan', which no JSON reader takes). Prints ok or FAIL per check; exit 1 on a failure.
+'nan', which no JSON reader takes) and E_withheld saying why. Prints ok or FAIL per check; exit 1 on a failure.
 """
 import json
 import math
@@ -62,6 +62,8 @@ def main():
         if s is not None:
             check(s.get("E_GPa", 0) is None and isinstance(s.get("E_r_GPa"), float),
                   f"a 100 GPa indenter: E_GPa null ({s.get('E_GPa')!r}), E_r a number ({s.get('E_r_GPa')!r})")
+            check("stiffer than the indenter allows" in s.get("E_withheld", ""),
+                  f"a 100 GPa indenter: E_withheld says why ({s.get('E_withheld')!r})")
     return check.status()
 
 

@@ -226,7 +226,7 @@ PetscErrorCode IndSummaryFinish(IndSummary s, const IndIndenter *ind, const IndR
   const IndCurvePoint *pmax, *last;
   PetscInt       imax = 0, ne = 0, newton = 0, outer = 0, linear = 0, code;
   Entry          e[40];
-  char           why[512] = "";
+  char           why[512] = "", why_E[256] = "";
   PetscMPIInt    rank;
 
   PetscFunctionBeginUser;
@@ -317,14 +317,21 @@ PetscErrorCode IndSummaryFinish(IndSummary s, const IndIndenter *ind, const IndR
     PETSC_TRUE);
   Put(e, &ne, "wall_time_s", "wall time of the run", "s", (PetscReal)info->wall, PETSC_FALSE);
 
+  if (!code && PetscIsInfOrNanReal(r.E))
+    PetscCall(PetscSNPrintf(why_E, sizeof(why_E),
+      "sample modulus E withheld: E_r %.6g GPa is stiffer than the indenter allows (-op_indenter_modulus %g GPa, "
+      "-op_indenter_poisson %g: 1 / E_r must exceed (1 - nu_i^2) / E_i)", (double)r.E_r, (double)s->op.E_indenter,
+      (double)s->op.nu_indenter));
   if (print) {
     PetscCall(PetscPrintf(s->comm, "summary (%s indenter%s):\n", IndIndenterTypes[ind->type],
       write ? "; also in summary.txt and summary.json" : ""));
     for (PetscInt k = 0; k < ne; ++k) {
       if (e[k].integer) PetscCall(PetscPrintf(s->comm, "  %-58s %12.0f\n", e[k].label, (double)e[k].value));
+      else if (PetscIsInfOrNanReal(e[k].value)) PetscCall(PetscPrintf(s->comm, "  %-58s %12s\n", e[k].label, "withheld"));
       else PetscCall(PetscPrintf(s->comm, "  %-58s %12.6g %s\n", e[k].label, (double)e[k].value, e[k].unit));
     }
     if (code) PetscCall(PetscPrintf(s->comm, "  no Oliver-Pharr analysis: %s\n", why));
+    if (why_E[0]) PetscCall(PetscPrintf(s->comm, "  %s\n", why_E));
   } else if (code == 4) PetscCall(PetscPrintf(s->comm, "indent: warning: %s\n", why));
 
   PetscCallMPI(MPI_Comm_rank(s->comm, &rank));
@@ -335,8 +342,12 @@ PetscErrorCode IndSummaryFinish(IndSummary s, const IndIndenter *ind, const IndR
     PetscCall(PetscSNPrintf(tmp, sizeof(tmp), "%s.tmp", path));
     fp = fopen(tmp, "w");
     PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "Cannot write '%s' (-output_dir)", tmp);
-    for (PetscInt k = 0; k < ne; ++k) fprintf(fp, "%-58s %.10g %s\n", e[k].label, (double)e[k].value, e[k].unit);
+    for (PetscInt k = 0; k < ne; ++k) {
+      if (PetscIsInfOrNanReal(e[k].value)) fprintf(fp, "%-58s withheld\n", e[k].label);
+      else fprintf(fp, "%-58s %.10g %s\n", e[k].label, (double)e[k].value, e[k].unit);
+    }
     if (code) fprintf(fp, "no Oliver-Pharr analysis: %s\n", why);
+    if (why_E[0]) fprintf(fp, "%s\n", why_E);
     for (PetscInt k = 0; k < info->warnings->n; ++k) fprintf(fp, "warning: %s\n", info->warnings->text[k]);
     PetscCheck(fclose(fp) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Error writing '%s'", tmp);
     PetscCall(IndRenameInto(tmp, path));
@@ -352,6 +363,10 @@ PetscErrorCode IndSummaryFinish(IndSummary s, const IndIndenter *ind, const IndR
     for (PetscInt k = 0; k < ne; ++k) {
       if (PetscIsInfOrNanReal(e[k].value)) fprintf(fp, ",\n  \"%s\": null", e[k].key);
       else fprintf(fp, ",\n  \"%s\": %.12g", e[k].key, (double)e[k].value);
+    }
+    if (why_E[0]) {
+      fprintf(fp, ",\n  \"E_withheld\": ");
+      JsonString(fp, why_E);
     }
     if (code) {
       /* the results a reader looks for are there, empty, with the reason */
