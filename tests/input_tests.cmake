@@ -232,7 +232,7 @@ indent_script_test(bad_empty_contact_surface ${EXPECT_ERROR}
   "Surface 'lid' of mesh '.*lid.msh' \\(required by -contact_surface\\) is empty"
   ${INDENT} -mesh_file ${MESHDIR}/lid.msh ${ELASTIC} ${SPHERE} -contact_surface lid -output_fields 0)
 indent_script_test(bad_geo ${EXPECT_ERROR} --fresh ${CMAKE_CURRENT_BINARY_DIR}/bad_geo
-  "gmsh could not mesh '.*broken.geo' \\(-mesh_file\\): see '.*bad_geo/mesh.msh.log'"
+  "gmsh could not mesh '.*broken.geo' \\(-mesh_file\\): '.*broken.geo', line [0-9]+: syntax error .*: see '.*bad_geo/mesh.msh.log'"
   ${INDENT} -mesh_file ${CMAKE_CURRENT_SOURCE_DIR}/meshes/broken.geo -output_dir ${CMAKE_CURRENT_BINARY_DIR}/bad_geo
   ${ELASTIC})
 # gmsh writes mesh.msh.tmp, renamed only on success: a failed run leaves an earlier mesh.msh as it was.

@@ -1,5 +1,6 @@
 #define _POSIX_C_SOURCE 200809L /* strdup, strtok_r */
 #include <ctype.h>
+#include <stdio.h>
 #include <errno.h>
 #include <math.h>
 #include <string.h>
@@ -115,12 +116,33 @@ static PetscBool Quotable(const char s[])
   return strchr(s, '\'') ? PETSC_FALSE : PETSC_TRUE;
 }
 
+
+/* gmsh's own first error line in its log ("Error   : 'x.geo', line 2: syntax error (is)"), without its tag: what the
+   user most needs of a failed meshing. said[0] = 0 when the log has none. */
+static void FirstGmshError(const char log[], char said[], size_t len)
+{
+  FILE *fp = fopen(log, "r");
+  char  line[1024];
+
+  said[0] = 0;
+  if (!fp) return;
+  while (fgets(line, sizeof(line), fp))
+    if (!strncmp(line, "Error", 5)) {
+      const char *text = strchr(line, ':');
+      text             = text ? text + 1 : line;
+      while (*text == ' ') text++;
+      line[strcspn(line, "\r\n")] = 0;
+      snprintf(said, len, "%.300s", text);
+      break;
+    }
+  fclose(fp);
+}
 PetscErrorCode IndGmshMesh(MPI_Comm comm, const char gmsh[], const char geo[], char *params[], PetscInt nparams,
   const char msh[])
 {
   PetscMPIInt rank;
   int         status = 0, cause = 0, stopped = 0;
-  char        cmd[4 * PETSC_MAX_PATH_LEN], log[PETSC_MAX_PATH_LEN + 8], tmp[PETSC_MAX_PATH_LEN + 8];
+  char        cmd[4 * PETSC_MAX_PATH_LEN], log[PETSC_MAX_PATH_LEN + 8], tmp[PETSC_MAX_PATH_LEN + 8], said[320] = "";
 
   PetscFunctionBeginUser;
   PetscCheck(Quotable(gmsh) && Quotable(geo) && Quotable(msh), comm, PETSC_ERR_ARG_WRONG,
@@ -154,7 +176,9 @@ PetscErrorCode IndGmshMesh(MPI_Comm comm, const char gmsh[], const char geo[], c
     if (status == 0 && (cause = IndIOFaultFileCause(tmp))) status = -3;
     if (status == 0 && rename(tmp, msh)) status = -2;
     if (status) (void)remove(tmp);
+    if (status > 0 || status == -1) FirstGmshError(log, said, sizeof(said));
   }
+  PetscCallMPI(MPI_Bcast(said, (PetscMPIInt)sizeof(said), MPI_CHAR, 0, comm));
   PetscCallMPI(MPI_Bcast(&status, 1, MPI_INT, 0, comm));
   PetscCallMPI(MPI_Bcast(&cause, 1, MPI_INT, 0, comm));
   PetscCallMPI(MPI_Bcast(&stopped, 1, MPI_INT, 0, comm));
@@ -166,7 +190,8 @@ PetscErrorCode IndGmshMesh(MPI_Comm comm, const char gmsh[], const char geo[], c
   PetscCheck(status != -2, comm, PETSC_ERR_FILE_WRITE,
     "gmsh meshed '%s' (-mesh_file) but its mesh could not be renamed to '%s'", geo, msh);
   PetscCheck(status == 0, comm, PETSC_ERR_USER_INPUT,
-    "gmsh could not mesh '%s' (-mesh_file): see '%s'; the command was: %s", geo, log, cmd);
+    "gmsh could not mesh '%s' (-mesh_file)%s%s: see '%s'; the command was: %s", geo, said[0] ? ": " : "", said, log,
+    cmd);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
