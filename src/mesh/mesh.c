@@ -474,7 +474,7 @@ static PetscErrorCode CreateListingMesh(MPI_Comm comm, const char geo[], const I
     for (PetscInt c = cStart; c < cEnd; ++c) PetscCall(DMLabelSetValue(cells, c, 1 + (c - cStart) % info->nvolumes));
   for (PetscInt k = 0; k < info->nvolumes; ++k) PetscCall(AddRegion(mesh, info->volumes[k], 3, "Cell Sets", k + 1));
   for (PetscInt k = 0; k < info->nsurfaces; ++k) PetscCall(AddRegion(mesh, info->surfaces[k], 2, "Face Sets", 2));
-  PetscCall(PetscSNPrintf(mesh->source, sizeof(mesh->source), "%s (not meshed: -help)", geo));
+  PetscCall(PetscSNPrintf(mesh->source, sizeof(mesh->source), "%s (its physical names, read before meshing)", geo));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
