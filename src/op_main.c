@@ -193,8 +193,8 @@ static PetscErrorCode Analyse(void)
   PetscCall(PetscPrintf(PETSC_COMM_WORLD, "  S %.10g uN/nm, h_c %.10g nm (h_c/h_max %.4f), A(h_c) %.10g nm^2\n",
     (double)r.S, (double)r.h_c, (double)(r.h_c / r.h_max), (double)r.A));
   if (PetscIsInfOrNanReal(r.E))
-    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "  H %.10g GPa, E_r %.10g GPa, E withheld: E_r is stiffer than the indenter "
-      "allows (-op_indenter_modulus %g GPa, -op_indenter_poisson %g)\n", (double)r.H, (double)r.E_r,
+    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "  H %.10g GPa, E_r %.10g GPa, E withheld: E_r is stiffer than the "
+      "indenter allows (-op_indenter_modulus %g GPa, -op_indenter_poisson %g)\n", (double)r.H, (double)r.E_r,
       (double)p.E_indenter, (double)p.nu_indenter));
   else
     PetscCall(PetscPrintf(PETSC_COMM_WORLD, "  H %.10g GPa, E_r %.10g GPa, E %.10g GPa (nu %.3g, %s indenter)\n",

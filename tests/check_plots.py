@@ -8,7 +8,8 @@ imprint.csv has one finite row per top-surface vertex with heights equal to z + 
 last step (recomputed here from indent.h5), that the deepest point is below the surface and near the
 axis, that the written steps' fields are read beside their own rows of the curve (P_max's among them),
 that a missing run directory is an error, and that the run's curve alone (indent.h5 left out: a run
-without fields) gives load_displacement.png, exit 0 and a line naming what it lacks. Prints ok or FAIL: ..., exit status 0 or 1."""
+without fields) gives load_displacement.png, exit 0 and a line naming what it lacks. Prints ok or FAIL: ...,
+exit status 0 or 1."""
 import csv
 import os
 import shutil

@@ -327,7 +327,8 @@ PetscErrorCode IndSummaryFinish(IndSummary s, const IndIndenter *ind, const IndR
       write ? "; also in summary.txt and summary.json" : ""));
     for (PetscInt k = 0; k < ne; ++k) {
       if (e[k].integer) PetscCall(PetscPrintf(s->comm, "  %-58s %12.0f\n", e[k].label, (double)e[k].value));
-      else if (PetscIsInfOrNanReal(e[k].value)) PetscCall(PetscPrintf(s->comm, "  %-58s %12s\n", e[k].label, "withheld"));
+      else if (PetscIsInfOrNanReal(e[k].value))
+        PetscCall(PetscPrintf(s->comm, "  %-58s %12s\n", e[k].label, "withheld"));
       else PetscCall(PetscPrintf(s->comm, "  %-58s %12.6g %s\n", e[k].label, (double)e[k].value, e[k].unit));
     }
     if (code) PetscCall(PetscPrintf(s->comm, "  no Oliver-Pharr analysis: %s\n", why));

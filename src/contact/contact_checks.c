@@ -31,10 +31,10 @@ PetscErrorCode IndContactCheckMirror(IndContact c, IndBC bc, PetscReal depth_max
       const PetscReal gap = c->indenter.axis[a] - spec[k].plane;
       if (spec[k].mask != (1 << a) || IndContactPlaneThroughAxis(&spec[k], &c->indenter)) continue;
       PetscCheck(PetscAbsReal(gap) >= edge, c->comm, PETSC_ERR_USER_INPUT,
-                 "-bc_symmetry '%s' (the plane %c = %.6g nm) cuts the indenter, whose axis is %.6g nm from it and whose "
-                 "contact reaches %.6g nm from the axis at -load_depth %.6g nm: the model would hold it and its mirror "
-                 "image overlapping; put -indenter_axis on the plane (a half model) or %.6g nm or more from it (a pair "
-                 "of indents)",
+                 "-bc_symmetry '%s' (the plane %c = %.6g nm) cuts the indenter, whose axis is %.6g nm from it and "
+                 "whose contact reaches %.6g nm from the axis at -load_depth %.6g nm: the model would hold it and its "
+                 "mirror image overlapping; put -indenter_axis on the plane (a half model) or %.6g nm or more from it "
+                 "(a pair of indents)",
                  spec[k].label, "xy"[a], (double)spec[k].plane, (double)PetscAbsReal(gap), (double)edge,
                  (double)depth_max, (double)edge);
       PetscCall(PetscSNPrintf(warning, len,

@@ -58,9 +58,9 @@ PetscErrorCode IndPlasticYieldCheckModulus(const IndPlasticParams *m, const char
   else if (table) PetscCall(PetscSNPrintf(opt, sizeof(opt), "the first stress of -%shardening_file", pre));
   else PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%syield", pre));
   PetscCheck(m->R0 < E, comm, PETSC_ERR_ARG_OUTOFRANGE,
-    "The initial yield stress %g GPa (%s) is not below the region's Young's modulus %g GPa: no solid yields at a strain "
-    "of 1. Stresses are in GPa (300 MPa is 0.3); a region that never yields is -%smodel elastic", (double)m->R0, opt,
-    (double)E, pre);
+    "The initial yield stress %g GPa (%s) is not below the region's Young's modulus %g GPa: no solid yields at a "
+    "strain of 1. Stresses are in GPa (300 MPa is 0.3); a region that never yields is -%smodel elastic",
+    (double)m->R0, opt, (double)E, pre);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
