@@ -80,7 +80,8 @@ static PetscErrorCode CheckPrefixName(MPI_Comm comm, const char region[])
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode ReadMaterial(MPI_Comm comm, const char region[], IndMaterial *m)
+/* hint ends the message of a missing material: on the default box, what a first run without options needs */
+static PetscErrorCode ReadMaterial(MPI_Comm comm, const char region[], const char hint[], IndMaterial *m)
 {
   char      prefix[IND_NAME_LEN + 2], opt[IND_NAME_LEN + 32], title[2 * IND_NAME_LEN + 64];
   PetscBool has_E, has_nu;
@@ -102,7 +103,8 @@ static PetscErrorCode ReadMaterial(MPI_Comm comm, const char region[], IndMateri
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%syoung", prefix));
-  PetscCheck(has_E, comm, PETSC_ERR_ARG_WRONG, "Region '%s' needs a material: option %s (GPa) is missing", region, opt);
+  PetscCheck(has_E, comm, PETSC_ERR_ARG_WRONG, "Region '%s' needs a material: option %s (GPa) is missing%s", region, opt,
+    hint);
   PetscCheck(m->young > 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "%s must be > 0 (GPa), got %g", opt, (double)m->young);
   PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%spoisson", prefix));
   PetscCheck(has_nu, comm, PETSC_ERR_ARG_WRONG, "Region '%s' needs a material: option %s is missing", region, opt);
@@ -146,7 +148,9 @@ PetscErrorCode IndMaterialsCreate(IndMesh mesh, IndDisc space, IndMaterials *out
     IS      cells;
     if (regions[r].dim != 3) continue;
     if (!IndHelpListing()) PetscCall(IndMeshCheckRegionNotEmpty(mesh, regions[r].name, 3, NULL));
-    PetscCall(ReadMaterial(comm, regions[r].name, &mats->mat[mats->n]));
+    PetscCall(ReadMaterial(comm, regions[r].name,
+      strcmp(source, "box") ? "" : " (with no -mesh_file indent takes PETSc's box mesh, one region 'domain'; the "
+      "paper's case is -options_file inputs/berkovich.opts, and -help lists every option)", &mats->mat[mats->n]));
     PetscCall(DMGetLabel(dm, regions[r].name, &label));
     PetscCall(DMLabelGetStratumIS(label, 1, &cells));
     if (cells) {
