@@ -64,6 +64,9 @@ def main():
                   f"a 100 GPa indenter: E_GPa null ({s.get('E_GPa')!r}), E_r a number ({s.get('E_r_GPa')!r})")
             check("stiffer than the indenter allows" in s.get("E_withheld", ""),
                   f"a 100 GPa indenter: E_withheld says why ({s.get('E_withheld')!r})")
+            check(s.get("op_indenter_modulus") == 100 and s.get("op_poisson") == 0.3,
+                  f"a 100 GPa indenter: summary.json records op_indenter_modulus {s.get('op_indenter_modulus')} and "
+                  f"op_poisson {s.get('op_poisson')}")
     return check.status()
 
 

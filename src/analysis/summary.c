@@ -360,6 +360,9 @@ PetscErrorCode IndSummaryFinish(IndSummary s, const IndIndenter *ind, const IndR
     PetscCall(WriteProvenance(fp, info));
     fprintf(fp, "  \"indenter\": \"%s\",\n  \"op_fraction\": %.10g,\n  \"op_epsilon\": %.10g,\n  \"op_beta\": %.10g",
       IndIndenterTypes[ind->type], (double)s->op.fraction, (double)s->op.epsilon, (double)s->op.beta);
+    /* what E came from: the sample's Poisson's ratio and the indenter's elasticity (0: rigid) */
+    fprintf(fp, ",\n  \"op_poisson\": %.10g,\n  \"op_indenter_modulus\": %.10g,\n  \"op_indenter_poisson\": %.10g",
+      (double)s->op.nu_sample, (double)s->op.E_indenter, (double)s->op.nu_indenter);
     /* JSON has no inf or nan (E is NaN when E_r exceeds what the indenter allows): null */
     for (PetscInt k = 0; k < ne; ++k) {
       if (PetscIsInfOrNanReal(e[k].value)) fprintf(fp, ",\n  \"%s\": null", e[k].key);
