@@ -23,7 +23,7 @@ int main(int argc, char **argv)
 
   /* A failure halves the increment; easy steps grow it by 1.5 up to the initial increment. */
   PetscCall(IndLoadPathSetFromOptions(PETSC_COMM_SELF, PETSC_FALSE, &lp));
-  PetscCall(IndLoadPathReject(&lp, PETSC_COMM_SELF, "test"));
+  PetscCall(IndLoadPathReject(&lp, PETSC_COMM_SELF, "test", NULL));
   EXPECT(PetscAbsReal(IndLoadPathTarget(&lp) - 0.05) < 1e-15, "after a cutback the target is %g, not 0.05",
     (double)IndLoadPathTarget(&lp));
   IndLoadPathAccept(&lp, 2);
@@ -37,8 +37,8 @@ int main(int argc, char **argv)
   /* Ten cutbacks in a row reach -load_min_increment (initial / 1024); the eleventh is an error. */
   PetscCall(IndLoadPathSetFromOptions(PETSC_COMM_SELF, PETSC_FALSE, &lp));
   PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
-  for (n = 0; n < 10; ++n) PetscCall(IndLoadPathReject(&lp, PETSC_COMM_SELF, "test"));
-  err = IndLoadPathReject(&lp, PETSC_COMM_SELF, "test");
+  for (n = 0; n < 10; ++n) PetscCall(IndLoadPathReject(&lp, PETSC_COMM_SELF, "test", NULL));
+  err = IndLoadPathReject(&lp, PETSC_COMM_SELF, "test", NULL);
   EXPECT(err == PETSC_ERR_NOT_CONVERGED, "the 11th cutback in a row must fail, returned %d", (int)err);
 
   /* A limit (the contact's edge) shortens the next step only, not below the smallest increment, and a limit past
@@ -111,7 +111,7 @@ int main(int argc, char **argv)
       EXPECT(PetscAbsReal(t - t_expect[n]) < 1e-14, "unloading program step %" PetscInt_FMT ": t %.17g, not %g", n,
         (double)t, (double)t_expect[n]);
       if (n == 4) {
-        PetscCall(IndLoadPathReject(&lp, PETSC_COMM_SELF, "test"));
+        PetscCall(IndLoadPathReject(&lp, PETSC_COMM_SELF, "test", NULL));
         EXPECT(PetscAbsReal(IndLoadPathTarget(&lp) - 1.453125) < 1e-14, "cut unloading step: target %g",
           (double)IndLoadPathTarget(&lp));
       }
@@ -132,7 +132,7 @@ int main(int argc, char **argv)
     n = 0;
     while (!IndLoadPathDone(&lp)) {
       PetscReal t;
-      if (n == 3) PetscCall(IndLoadPathReject(&lp, PETSC_COMM_SELF, "test")); /* the slide's 0.25 -> 0.125 */
+      if (n == 3) PetscCall(IndLoadPathReject(&lp, PETSC_COMM_SELF, "test", NULL)); /* the slide's 0.25 -> 0.125 */
       t = IndLoadPathTarget(&lp);
       EXPECT(n < 9 && PetscAbsReal(t - t_expect[n]) < 1e-14 && PetscAbsReal(IndLoadPathFactor(&lp,
         t) - l_expect[n]) < 1e-14 &&

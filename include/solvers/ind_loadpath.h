@@ -68,7 +68,7 @@ PetscReal      IndLoadPathTarget(const IndLoadPath *path);
 void           IndLoadPathLimit(IndLoadPath *path, PetscReal t_max);
 void           IndLoadPathAccept(IndLoadPath *path, PetscInt newton_its);
 /* Cuts the increment; errors (naming the options) once it falls below dt_min or after
-   max_cutbacks failures in a row. */
-PetscErrorCode IndLoadPathReject(IndLoadPath *path, MPI_Comm comm, const char why[]);
+   max_cutbacks failures in a row, ending with remedy (NULL: more cutbacks or smaller steps). */
+PetscErrorCode IndLoadPathReject(IndLoadPath *path, MPI_Comm comm, const char why[], const char remedy[]);
 /* Its part of the state (ind_state.h): the position in the program, the next increment and the counters. */
 PetscErrorCode IndLoadPathState(void *path, IndStateFile file);

@@ -347,7 +347,11 @@ PetscErrorCode IndAppStep(IndApp app, IndStepResult *r)
         "increment\n", (double)t, r->newton, r->linear, r->why));
     lp->rejected_newton += r->newton;
     lp->rejected_linear += r->linear;
-    PetscCall(IndLoadPathReject(lp, app->comm, r->why));
+    /* a linear solve that fails (an iterative solver's limit, met at the reversal with friction of 2 on the paper's
+       mesh, where MUMPS solves every step) is not cured by smaller steps */
+    PetscCall(IndLoadPathReject(lp, app->comm, r->why,
+      r->reason == SNES_DIVERGED_LINEAR_SOLVE ? "the linear solves failed, which smaller steps do not cure: a direct "
+      "solve (-ksp_type preonly -pc_type lu -pc_factor_mat_solver_type mumps) may" : NULL));
   } else {
     /* With contact, Newton runs once per outer iteration: judge the step by its average. */
     IndLoadPathAccept(lp, r->outer > 1 ? (r->newton + r->outer - 1) / r->outer : r->newton);

@@ -1,4 +1,3 @@
-#include <string.h>
 #include "ind_loadpath.h"
 
 PetscErrorCode IndLoadPathSetFromOptions(MPI_Comm comm, PetscBool unload_default, IndLoadPath *lp)
@@ -203,29 +202,18 @@ PetscInt IndLoadPathStepsLeft(const IndLoadPath *lp, PetscInt every, PetscInt li
   return n;
 }
 
-/* What to try when steps keep failing: a linear solve that fails (an iterative solver's limit, met at the reversal
-   with friction of 2 on the paper's mesh, where MUMPS solves every step) is not cured by smaller steps. */
-static const char *Remedy(const char why[])
-{
-  return strstr(why, "DIVERGED_LINEAR_SOLVE")
-           ? "the linear solves failed, which smaller steps do not cure: a direct solve (-ksp_type preonly -pc_type lu "
-             "-pc_factor_mat_solver_type mumps) may"
-           : "raise -load_max_cutbacks or refine -load_steps";
-}
-
-PetscErrorCode IndLoadPathReject(IndLoadPath *lp, MPI_Comm comm, const char why[])
+PetscErrorCode IndLoadPathReject(IndLoadPath *lp, MPI_Comm comm, const char why[], const char remedy[])
 {
   PetscFunctionBeginUser;
   lp->cutbacks++;
   lp->cutbacks_in_a_row++;
   PetscCheck(lp->cutbacks_in_a_row <= lp->max_cutbacks, comm, PETSC_ERR_NOT_CONVERGED,
     "Load step from load factor %.6g failed %" PetscInt_FMT " times in a row (last: %s); %s", (double)lp->t,
-    lp->cutbacks_in_a_row, why, Remedy(why));
+    lp->cutbacks_in_a_row, why, remedy ? remedy : "raise -load_max_cutbacks or refine -load_steps");
   lp->dt *= lp->cutback;
   PetscCheck(lp->dt >= lp->dt_min * (1 - IND_LOAD_END_TOL), comm, PETSC_ERR_NOT_CONVERGED,
     "Load step from load factor %.6g failed (%s) and the increment %.6g would fall below -load_min_increment %.6g%s%s",
-    (double)lp->t, why, (double)lp->dt, (double)lp->dt_min, strstr(why, "DIVERGED_LINEAR_SOLVE") ? "; " : "",
-    strstr(why, "DIVERGED_LINEAR_SOLVE") ? Remedy(why) : "");
+    (double)lp->t, why, (double)lp->dt, (double)lp->dt_min, remedy ? "; " : "", remedy ? remedy : "");
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
