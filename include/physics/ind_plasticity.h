@@ -67,6 +67,12 @@ PetscErrorCode IndPlasticCommonCheck(const IndPlasticParams *m, const char prefi
 /* Rejects non-physical parameters; prefix is the region's option prefix ("film_") used to name the
    offending option in the message. Plastic parameters are not checked when elastic_only is set. */
 PetscErrorCode IndPlasticParamsCheck(const IndPlasticParams *m, const char prefix[], MPI_Comm comm);
+/* E from the moduli the material has set (kappa, mu). */
+static inline PetscReal IndPlasticYoung(const IndPlasticParams *m)
+{
+  return 9 * m->kappa * m->mu / (3 * m->kappa + m->mu);
+}
+
 /* Rejects an initial yield stress R0 at or above the Young's modulus of kappa and mu (a yield strain of 1 or more:
    stresses given in MPa), naming the option R0 came from; pre is the region's option prefix. */
 PetscErrorCode IndPlasticYieldCheckModulus(const IndPlasticParams *m, const char pre[], MPI_Comm comm);

@@ -17,12 +17,6 @@ static PetscReal dR(const IndPlasticParams *m, PetscReal p)
   return EXPONENT(m) * YOUNG(m) * PetscPowReal(1 + YOUNG(m) * p / m->R0, EXPONENT(m) - 1);
 }
 
-/* E from the moduli the material has set (kappa, mu). */
-static PetscReal Young(const IndPlasticParams *m)
-{
-  return 9 * m->kappa * m->mu / (3 * m->kappa + m->mu);
-}
-
 static PetscErrorCode Read(PetscOptionItems *PetscOptionsObject, MPI_Comm comm, const char region[],
                            IndPlasticParams *m)
 {
@@ -33,7 +27,7 @@ static PetscErrorCode Read(PetscOptionItems *PetscOptionsObject, MPI_Comm comm, 
   PetscCall(IndOptionsReal("-hardening_exponent", "Power-law exponent n: R = R0 (1 + E p / R0)^n", "",
                            IND_REQUIRED " with power", EXPONENT(m), &EXPONENT(m), &set));
   if (!IndHelpListing()) PetscCall(IndHardeningRequire(comm, region, "hardening_exponent", set, "power-law exponent"));
-  YOUNG(m) = Young(m);
+  YOUNG(m) = IndPlasticYoung(m);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -57,5 +51,5 @@ void IndHardeningSetPower(IndPlasticParams *m, PetscReal n)
 {
   m->law      = IndHardeningPower();
   EXPONENT(m) = n;
-  YOUNG(m)    = Young(m);
+  YOUNG(m)    = IndPlasticYoung(m);
 }

@@ -46,7 +46,7 @@ PetscErrorCode IndPlasticParamsCheck(const IndPlasticParams *m, const char prefi
    meant to stay elastic), and would silently make the region elastic. */
 PetscErrorCode IndPlasticYieldCheckModulus(const IndPlasticParams *m, const char pre[], MPI_Comm comm)
 {
-  const PetscReal E    = 9.0 * m->kappa * m->mu / (3.0 * m->kappa + m->mu);
+  const PetscReal E    = IndPlasticYoung(m);
   const char     *name = m->law ? m->law->name : NULL;
   char            opt[256];
   PetscBool       swift = PETSC_FALSE, table = PETSC_FALSE;
