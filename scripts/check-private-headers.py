@@ -20,6 +20,7 @@ WHITE_BOX = {
     "tests/test_matinsert.c": {"physics": "switches the assembly's cached insertion off to compare"},
     "tests/test_cell_stiffness.c": {"physics": "unit test of the kinematics' point stiffness and the cell completion"},
     "tests/bench_point_kernels.c": {"physics": "benchmark of the kinematics' point kernels, called one by one"},
+    "tests/test_kept_jacobian.c": {"physics": "unit test: both Jacobians through the assembly's own matrix"},
     "tests/test_held_lu.c": {"solvers": "reads the size of the free block the section's direct solve factors"},
     "tests/test_linesearch.c": {"solvers": "unit test of depth control's line search, private to the solvers"},
     "tests/test_pcreuse.c": {"solvers": "unit test of the rule that rebuilds the multigrid, private to the solvers"},

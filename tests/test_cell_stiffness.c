@@ -2,7 +2,9 @@
    the kinematics' stiffness computed for the first nb - 1 nodes and the last node's rows and columns completed
    from them equals the stiffness computed for all nb nodes, for both kinematics, linear tetrahedra and
    hexahedra, elastic and plastic points, one and several quadrature points. Gradients that do not sum to zero
-   (a control) must make the two differ: the comparison can fail. */
+   (a control) must make the two differ: the comparison can fail. And at finite strain, a point that never yielded
+   (whose material is evaluated in the eigenbasis of C) gives the stiffness and stress of the global frame's general
+   path, elastic or yielding, J2 or densifying; a plastic history (the control) must not. */
 #include <string.h>
 #include "assembly_impl.h"
 #include "point_material.h"
@@ -40,8 +42,8 @@ static PetscReal Compare(const IndKinematics *kin, const IndMaterial *m, PetscIn
       for (int k = 3; k < 6; ++k) old[k] = 0.01 * (2.0 * Rand(seed) - 1.0);
       old[12] = 0.02;
     }
-    (void)kin->stiffness(m, IND_TANGENT_CONSISTENT, nb, nb, G, NULL, u, old, w, B, DB, full);
-    (void)kin->stiffness(m, IND_TANGENT_CONSISTENT, nb, nb - 1, G, NULL, u, old, w, B, DB, part);
+    (void)kin->stiffness(m, IND_TANGENT_CONSISTENT, nb, nb, G, NULL, u, old, w, B, DB, full, NULL);
+    (void)kin->stiffness(m, IND_TANGENT_CONSISTENT, nb, nb - 1, G, NULL, u, old, w, B, DB, part, NULL);
   }
   for (PetscInt r = 1; r < nd; ++r)
     for (PetscInt c = 0; c < r; ++c) full[r * nd + c] = full[c * nd + r];
@@ -56,26 +58,35 @@ static PetscReal Compare(const IndKinematics *kin, const IndMaterial *m, PetscIn
   return dmax / kmax;
 }
 
-/* Max |K1 - K2| / max |K1| between the finite-strain stiffness of an elastic point that never yielded (M by its 3 x 3
-   block and diagonal) and of the same point with a plastic strain eps in its history: eps = 1e-300 leaves the stress
-   as it is and takes the general tangent, which must agree; eps = 1e-3 turns the stress and must not. */
-static PetscReal CompareCoaxial(const IndMaterial *m, PetscInt nb, PetscInt nt, PetscReal eps, unsigned long long *seed)
+/* Max relative difference, in the stiffness and in the stress, between a finite-strain point that never yielded
+   (its material evaluated in the eigenbasis of C) and the same point with a plastic strain eps in its history (the
+   material in the global frame): eps = 1e-300 leaves the response as it is, which must agree; eps = 1e-3 turns the
+   stress and must not. amp: the displacements' amplitude (1e-3 elastic, 0.05 yielding from the virgin state). */
+static PetscReal CompareVirgin(const IndMaterial *m, PetscInt nb, PetscInt nt, PetscReal amp, PetscReal eps,
+                               unsigned long long *seed)
 {
   const IndKinematics *kin = IndKinematicsFinite();
   const PetscInt       nd  = 3 * nb;
-  PetscReal            K1[MAXND * MAXND] = {0}, K2[MAXND * MAXND] = {0}, B[6 * MAXND], DB[6 * MAXND];
-  PetscReal            G[3 * MAXNB], u[MAXND], old[IND_HISTORY_NVAL] = {0}, kmax = 0, dmax = 0;
+  PetscReal            K1[MAXND * MAXND] = {0}, K2[MAXND * MAXND] = {0}, B[6 * MAXND], DB[6 * MAXND], P1[9], P2[9];
+  PetscReal            G[3 * MAXNB], u[MAXND], old[IND_HISTORY_NVAL] = {0}, kmax = 0, dmax = 0, pmax = 0, dpmax = 0;
+  PetscReal            dp;
 
   Gradients(seed, nb, PETSC_FALSE, G);
-  for (PetscInt k = 0; k < nd; ++k) u[k] = 1e-3 * (2.0 * Rand(seed) - 1.0);
-  (void)kin->stiffness(m, IND_TANGENT_CONSISTENT, nb, nt, G, NULL, u, old, 0.7, B, DB, K1);
+  for (PetscInt k = 0; k < nd; ++k) u[k] = amp * (2.0 * Rand(seed) - 1.0);
+  (void)kin->stiffness(m, IND_TANGENT_CONSISTENT, nb, nt, G, NULL, u, old, 0.7, B, DB, K1, NULL);
+  (void)kin->stress(m, IND_TANGENT_CONSISTENT, nb, G, NULL, u, old, NULL, P1, &dp, NULL);
   old[0] = eps;
-  (void)kin->stiffness(m, IND_TANGENT_CONSISTENT, nb, nt, G, NULL, u, old, 0.7, B, DB, K2);
+  (void)kin->stiffness(m, IND_TANGENT_CONSISTENT, nb, nt, G, NULL, u, old, 0.7, B, DB, K2, NULL);
+  (void)kin->stress(m, IND_TANGENT_CONSISTENT, nb, G, NULL, u, old, NULL, P2, &dp, NULL);
   for (PetscInt k = 0; k < nd * nd; ++k) {
     kmax = PetscMax(kmax, PetscAbsReal(K2[k]));
     dmax = PetscMax(dmax, PetscAbsReal(K1[k] - K2[k]));
   }
-  return dmax / kmax;
+  for (int k = 0; k < 9; ++k) {
+    pmax  = PetscMax(pmax, PetscAbsReal(P2[k]));
+    dpmax = PetscMax(dpmax, PetscAbsReal(P1[k] - P2[k]));
+  }
+  return PetscMax(dmax / kmax, dpmax / pmax);
 }
 
 int main(int argc, char **argv)
@@ -105,17 +116,28 @@ int main(int argc, char **argv)
                : "small, control: gradients not summing to zero differ (1 / difference)", 1.0 / d, 1e3);
     }
   }
-  printf("finite strain: the stiffness of a point that never yielded against the general tangent's\n");
-  for (PetscInt nb = 4; nb <= 8; nb += 4) {
-    char      what[128];
-    PetscReal worst = 0, control = PETSC_MAX_REAL;
-    for (int t = 0; t < 50; ++t) worst = PetscMax(worst, CompareCoaxial(&m, nb, nb == 4 ? 4 : 7, 1e-300, &seed));
-    for (int t = 0; t < 10; ++t) control = PetscMin(control, CompareCoaxial(&m, nb, nb == 4 ? 4 : 7, 1e-3, &seed));
-    PetscCall(PetscSNPrintf(what, sizeof(what), "finite, %" PetscInt_FMT " nodes, never yielded", nb));
-    Report(what, worst, 1e-13);
-    PetscCall(PetscSNPrintf(what, sizeof(what), "finite, %" PetscInt_FMT " nodes, control: a plastic strain 1e-3 "
-                                                "(1e-4 / difference)", nb));
-    Report(what, 1e-4 / control, 1.0);
+  printf("finite strain: a point that never yielded (material in the eigenbasis of C) against the global frame's\n");
+  for (int mat = 0; mat < 2; ++mat) {
+    IndMaterial md = m;
+    if (mat) { /* the densifying glass: its consistent tangent comes whole, not by its parts */
+      md.model                         = IND_MODEL_DENSIFYING;
+      md.plastic.yield_pressure        = 0.4;
+      md.plastic.densification_modulus = 2.0;
+    }
+    for (PetscInt nb = 4; nb <= 8; nb += 4)
+      for (int c = 0; c < 2; ++c) {
+        const PetscReal amp = c ? 0.05 : 1e-3;
+        char            what[160];
+        PetscReal       worst = 0, control = PETSC_MAX_REAL;
+        for (int t = 0; t < 50; ++t) worst = PetscMax(worst, CompareVirgin(&md, nb, nb == 4 ? 4 : 7, amp, 1e-300, &seed));
+        for (int t = 0; t < 10; ++t)
+          control = PetscMin(control, CompareVirgin(&md, nb, nb == 4 ? 4 : 7, amp, 1e-3, &seed));
+        PetscCall(PetscSNPrintf(what, sizeof(what), "%s, %" PetscInt_FMT " nodes, %s", mat ? "densifying" : "J2", nb,
+                                c ? "yielding (0.05)" : "elastic (1e-3)"));
+        Report(what, worst, 1e-13);
+        PetscCall(PetscSNPrintf(what, sizeof(what), "  control: a plastic strain 1e-3 (1e-5 / difference)"));
+        Report(what, 1e-5 / control, 1.0);
+      }
   }
   PetscCall(PetscFinalize());
   return failures ? 1 : 0;

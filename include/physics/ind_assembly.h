@@ -47,6 +47,8 @@ PetscBool      IndAssemblyIsAxisymmetric(IndAssembly assembly);
 IndDisc        IndAssemblyGetDisc(IndAssembly assembly);
 /* Quadrature points of this rank whose return map failed, and those yielding, in the last residual. */
 void           IndAssemblyGetPointCounts(IndAssembly assembly, PetscInt *failed, PetscInt *plastic);
+/* Jacobians on this rank that reused the points' work of the residual at their displacement (finite strain). */
+PetscInt       IndAssemblyGetKeptUses(IndAssembly assembly);
 /* A body force (nN/nm^3) at every quadrature point, for manufactured solutions; NULL removes it. */
 PetscErrorCode IndAssemblySetBodyForce(IndAssembly assembly, IndVectorFn fn, void *ctx);
 /* Creates the AIJ matrix (block size 3) preallocated by a dry run of the cell loop. */

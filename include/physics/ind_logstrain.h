@@ -35,8 +35,15 @@ void IndSymEigen(const PetscReal A[6], PetscReal lambda[3], PetscReal V[9]);
 /* From the displacement gradient H = F - I (not F: stored as I + H, a strain of 1e-6 would keep only
    10 digits, and Newton's residual would stall there): the decomposition of C and the Hencky strain E
    (engineering shears). Returns 1 (and leaves E unset) when det F <= 0: an inverted element, which
-   the caller treats as a failed point. */
+   the caller treats as a failed point. E may be NULL: the strain in the eigenbasis is diag(L) / 2. */
 int IndLogStrainFromGradient(const PetscReal H[9], IndLogStrain *ls, PetscReal E[6]);
+/* The part of the decomposition worth keeping for a second use at the same gradient (the residual's for the
+   Jacobian's: the eigen-decomposition and the logarithms are two fifths of a finite-strain stiffness), and the
+   decomposition rebuilt from it and H: what IndLogStrainFromGradient gives, to the bit, without its cost. */
+#define IND_LOGSTRAIN_NKEEP 15
+void IndLogStrainKeep(const IndLogStrain *ls, PetscReal kept[IND_LOGSTRAIN_NKEEP]);
+void IndLogStrainFromKept(const PetscReal H[9], const PetscReal kept[IND_LOGSTRAIN_NKEEP], IndLogStrain *ls,
+                          PetscReal E[6]);
 /* S = T : 2 dE/dC, both tensor components. */
 void IndLogStrainStress(const IndLogStrain *ls, const PetscReal T[6], PetscReal S[6]);
 /* The same from T~ = N^T T N (IndLogStrainIntoBasis), when the caller needs T~ too. */

@@ -53,6 +53,7 @@ PetscErrorCode IndAssemblyDestroy(IndAssembly *a)
   PetscCall(PetscFree7((*a)->ue, (*a)->xe, (*a)->fe, (*a)->Ke, (*a)->G, (*a)->DB, (*a)->B));
   PetscCall(PetscFree((*a)->hoop));
   PetscCall(PetscFree((*a)->xq));
+  PetscCall(PetscFree2((*a)->kept, (*a)->kept_u));
   PetscCall(IndMatInsertDestroy(&(*a)->insert));
   PetscCall(PetscFree(*a));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -75,15 +76,22 @@ PetscErrorCode IndAssemblySetBodyForce(IndAssembly a, IndVectorFn fn, void *ctx)
 static PetscErrorCode PointLoop(IndAssembly a, Vec Uloc, Vec Floc)
 {
   const IndDiscLayout *disc = a->layout;
-  const PetscInt     nb = disc->nb, nq = disc->nq;
+  const PetscInt     nb = disc->nb, nq = disc->nq, nkeep = Floc ? a->kin->nkeep : 0;
   const PetscInt     stride = a->history->stride, nval = a->history->nval;
   const PetscScalar *u;
   PetscScalar       *f = NULL, *hist;
   const PetscScalar *hist_read, *xn;
+  PetscInt           nu;
 
   PetscFunctionBeginUser;
   a->nfailed = a->nplastic = 0;
   if (Floc) PetscCall(VecZeroEntries(Floc));
+  PetscCall(VecGetLocalSize(Uloc, &nu));
+  if (nkeep) {
+    /* the Jacobian that follows a residual is nearly always at its displacement (Newton's accepted iterate) */
+    if (!a->kept) PetscCall(PetscMalloc2(disc->ncell * nq * nkeep, &a->kept, nu, &a->kept_u));
+    a->kept_n = 0; /* until the loop is through */
+  }
   PetscCall(VecGetArrayRead(Uloc, &u));
   PetscCall(VecGetArrayRead(a->Xloc, &xn));
   if (Floc) PetscCall(VecGetArray(Floc, &f));
@@ -106,7 +114,8 @@ static PetscErrorCode PointLoop(IndAssembly a, Vec Uloc, Vec Floc)
 
       IndHistoryUnpack(nval, h, old);
       if (!Floc) PetscCall(PetscArraycpy(upd, old, IND_HISTORY_NVAL)); /* an elastic material's update writes none */
-      status = a->kin->stress(m, a->tangent, nb, a->G, a->khoop, a->ue, old, Floc ? NULL : upd, P, &dp);
+      status = a->kin->stress(m, a->tangent, nb, a->G, a->khoop, a->ue, old, Floc ? NULL : upd, P, &dp,
+                              nkeep ? a->kept + (i * nq + q) * nkeep : NULL);
       if (status != IND_PLASTIC_OK) {
         a->nfailed++;
         continue;
@@ -135,6 +144,11 @@ static PetscErrorCode PointLoop(IndAssembly a, Vec Uloc, Vec Floc)
   if (Floc) PetscCall(VecRestoreArrayRead(a->history->committed, &hist_read));
   else PetscCall(VecRestoreArray(a->history->committed, &hist));
   PetscCall(VecRestoreArrayRead(a->Xloc, &xn));
+  /* a failed point kept nothing, and its residual ends the Newton iteration anyway */
+  if (nkeep && !a->nfailed) {
+    PetscCall(PetscArraycpy(a->kept_u, u, nu));
+    a->kept_n = nu;
+  }
   PetscCall(VecRestoreArrayRead(Uloc, &u));
   if (Floc) PetscCall(VecRestoreArray(Floc, &f));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -194,6 +208,8 @@ PetscErrorCode IndAssemblyJacobian(IndAssembly a, Vec Uloc, Mat J)
   const PetscScalar *u, *xn, *hold;
   IndMatInsert       ins = J == a->J ? a->insert : NULL; /* cached positions are the matrix's own */
   PetscInt          *g   = NULL;                           /* a cell's global dofs, for MatSetValues */
+  const PetscReal   *kept = NULL;
+  PetscInt           nu;
 
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(IndLog.jacobian, 0, 0, 0, 0));
@@ -205,6 +221,13 @@ PetscErrorCode IndAssemblyJacobian(IndAssembly a, Vec Uloc, Mat J)
     PetscCall(MatZeroEntries(J));
   }
   PetscCall(VecGetArrayRead(Uloc, &u));
+  PetscCall(VecGetLocalSize(Uloc, &nu));
+  if (a->kept_n && a->kept_n == nu) {
+    PetscBool same;
+    PetscCall(PetscArraycmp(u, a->kept_u, nu, &same)); /* byte by byte */
+    if (same) kept = a->kept, a->kept_uses++;
+  }
+  if (a->kin->nkeep && !kept) PetscCall(PetscInfo(a->dm, "No residual at this displacement kept: C decomposed again\n"));
   PetscCall(VecGetArrayRead(a->Xloc, &xn));
   PetscCall(VecGetArrayRead(a->history->committed, &hold));
   for (PetscInt i = 0; i < disc->ncell; ++i) {
@@ -222,7 +245,8 @@ PetscErrorCode IndAssemblyJacobian(IndAssembly a, Vec Uloc, Mat J)
       IndHistoryUnpack(nval, hold + i * stride + q * nval, old);
       /* A failed point was already reported by the residual at this displacement, which stops the
          Newton iteration before any Jacobian; its NaN tangent cannot go unnoticed either. */
-      (void)a->kin->stiffness(m, a->tangent, nb, nt, a->G, a->khoop, a->ue, old, w, a->B, a->DB, a->Ke);
+      (void)a->kin->stiffness(m, a->tangent, nb, nt, a->G, a->khoop, a->ue, old, w, a->B, a->DB, a->Ke,
+                              kept ? kept + (i * nq + q) * a->kin->nkeep : NULL);
     }
     if (nt < nb) IndCellMatrixCompleteLastNode(nb, a->Ke);
     else
@@ -415,6 +439,8 @@ IND_GETTER(PetscBool, IndAssemblyJacobianInodes, IndAssembly, o->inodes)
 IND_GETTER(PetscBool, IndAssemblyJacobianBlockProducts, IndAssembly, o->blocks)
 IND_GETTER(PetscBool, IndAssemblyIsAxisymmetric, IndAssembly, o->layout->axisymmetric)
 IND_GETTER(IndDisc, IndAssemblyGetDisc, IndAssembly, o->disc)
+
+IND_GETTER(PetscInt, IndAssemblyGetKeptUses, IndAssembly, o->kept_uses)
 
 void IndAssemblyGetPointCounts(IndAssembly a, PetscInt *failed, PetscInt *plastic)
 {

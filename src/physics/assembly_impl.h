@@ -24,6 +24,11 @@ struct _p_IndAssembly {
   IndMatInsert         insert;   /* and its cached insertion (NULL: MatSetValues) */
   PetscBool            inodes;   /* products by PETSc's inode kernel (-jac_inodes) */
   PetscBool            blocks;   /* products by block rows (-jac_block_products) */
+  /* what the last residual's points kept for a Jacobian at the same displacement (kin->nkeep values a point) */
+  PetscReal           *kept;
+  PetscScalar         *kept_u;    /* that residual's local displacement, to the bit */
+  PetscInt             kept_n;    /* its length; 0: nothing kept */
+  PetscInt             kept_uses; /* Jacobians that used them */
 };
 
 #include "material_impl.h"
@@ -123,21 +128,24 @@ static inline void IndDeformationGradient(PetscInt nb, const PetscReal *G, const
    test function's gradient e_x (x) G_a gains hoop_a e_y (x) e_y. hoop is NULL in 3D. */
 struct _IndKinematics {
   const char *name;
-  /* the stress that the residual integrates against G: first Piola-Kirchhoff P (3x3, row-major) */
+  /* the stress that the residual integrates against G: first Piola-Kirchhoff P (3x3, row-major); keep (if not
+     NULL) receives the point's nkeep values that spare the stiffness at the same displacement some work */
   IndPlasticStatus (*stress)(const IndMaterial *m, IndTangent tangent, PetscInt nb, const PetscReal *G,
                              const PetscReal *hoop, const PetscReal *ue, const PetscReal *old, PetscReal *trial,
-                             PetscReal P[9], PetscReal *dp);
+                             PetscReal P[9], PetscReal *dp, PetscReal *keep);
   /* Ke (nd x nd, nd = 3 nb) += w times the point's stiffness, on and above the diagonal, in the rows and columns of
      the first nt nodes (nt = nb, or nb - 1 when the cell loop completes the last node's from the others'); B and DB
-     workspaces of 6 nd */
+     workspaces of 6 nd; kept (if not NULL) what stress() kept at this very displacement */
   IndPlasticStatus (*stiffness)(const IndMaterial *m, IndTangent tangent, PetscInt nb, PetscInt nt, const PetscReal *G,
                                 const PetscReal *hoop, const PetscReal *ue, const PetscReal *old, PetscReal w,
-                                PetscReal *B, PetscReal *DB, PetscReal *Ke);
+                                PetscReal *B, PetscReal *DB, PetscReal *Ke, const PetscReal *kept);
   /* Cauchy stress and strain of a committed point h; w holds the reference weight and becomes the current one */
   void (*fields)(const IndMaterial *m, PetscInt nb, const PetscReal *G, const PetscReal *hoop, const PetscReal *ue,
                  const PetscReal *h, PetscReal sigma[6], PetscReal e[6], PetscReal *w);
   /* large deformation: an inverted point fails the step, contact areas follow the deformed surface */
   PetscBool large;
+  /* values a point keeps from the residual for the Jacobian at the same displacement (0: none) */
+  PetscInt nkeep;
 };
 
 /* The last node's rows and columns of a cell matrix Ke (nd x nd, nd = 3 nb) from the others', given the upper

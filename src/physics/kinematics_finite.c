@@ -5,32 +5,50 @@
 #include "assembly_impl.h"
 #include "ind_logstrain.h"
 
-/* The material point: the small-strain response at the Hencky strain, mapped to S. An inverted point (det F <= 0)
-   fails like a return map that does not converge: the step is cut. */
-static inline IndPlasticStatus FinitePoint(const IndMaterial *m, IndTangent tangent, const PetscReal H[9],
-                                           const PetscReal *old, PetscReal *trial, PetscReal S[6], PetscReal *dp)
+/* A committed state without plastic strain, back stress or accumulated plastic strain: the point's response is then
+   an isotropic function of E alone, which the material gives in E's own eigenbasis as well as in any other. */
+static inline PetscBool Virgin(const PetscReal *old)
 {
+  const IndPlasticState *o = (const IndPlasticState *)old;
+  PetscBool              v = (PetscBool)(o->p == 0.0);
+  for (int k = 0; k < 6; ++k) v = (PetscBool)(v && o->eps_p[k] == 0.0 && o->x[k] == 0.0);
+  return v;
+}
+
+/* The material point: the small-strain response at the Hencky strain, mapped to S. An inverted point (det F <= 0)
+   fails like a return map that does not converge: the step is cut. A virgin point's material is evaluated in the
+   eigenbasis of C (as by the stiffness), but for the commit, whose history update is in the global frame. */
+static inline IndPlasticStatus FinitePoint(const IndMaterial *m, IndTangent tangent, const PetscReal H[9],
+                                           const PetscReal *old, PetscReal *trial, PetscReal S[6], PetscReal *dp,
+                                           PetscReal *keep)
+{
+  const PetscBool  eigen = (PetscBool)(!trial && Virgin(old));
   IndLogStrain     ls;
   IndPlasticStatus status;
   PetscReal        E[6], T[6];
 
   *dp = 0.0;
-  if (IndLogStrainFromGradient(H, &ls, E)) return IND_PLASTIC_NOT_CONVERGED;
+  if (IndLogStrainFromGradient(H, &ls, eigen ? NULL : E)) return IND_PLASTIC_NOT_CONVERGED;
+  if (keep) IndLogStrainKeep(&ls, keep);
+  if (eigen) E[0] = 0.5 * ls.L[0], E[1] = 0.5 * ls.L[1], E[2] = 0.5 * ls.L[2], E[3] = E[4] = E[5] = 0.0;
   status = MaterialResponse(m, tangent, E, old, trial, T, NULL, dp);
   if (status != IND_PLASTIC_OK) return status;
-  IndLogStrainStress(&ls, T, S);
+  if (eigen) {
+    const PetscReal Tt[9] = {T[0], 0, 0, 0, T[1], 0, 0, 0, T[2]};
+    IndLogStrainStressFromBasis(&ls, Tt, S);
+  } else IndLogStrainStress(&ls, T, S);
   return status;
 }
 
 static IndPlasticStatus Stress(const IndMaterial *m, IndTangent tangent, PetscInt nb, const PetscReal *G,
                                const PetscReal *hoop, const PetscReal *ue, const PetscReal *old, PetscReal *trial,
-                               PetscReal P[9], PetscReal *dp)
+                               PetscReal P[9], PetscReal *dp, PetscReal *keep)
 {
   PetscReal        H[9], F[9], S[6];
   IndPlasticStatus status;
 
   IndDeformationGradient(nb, G, hoop, ue, H, F);
-  status = FinitePoint(m, tangent, H, old, trial, S, dp);
+  status = FinitePoint(m, tangent, H, old, trial, S, dp, keep);
   if (status != IND_PLASTIC_OK) return status;
   /* P = F S = S + H S, summed so that small strains keep their digits */
   for (int r = 0; r < 3; ++r) {
@@ -135,45 +153,50 @@ static inline void AddFiniteStiffness(PetscInt nb, PetscInt nt, const PetscReal 
   }
 }
 
-/* No plastic strain in the committed state: the elastic response is then an isotropic function of E itself. */
-static inline PetscBool NeverYielded(const PetscReal *old)
-{
-  const PetscReal *e = ((const IndPlasticState *)old)->eps_p;
-  return (PetscBool)(e[0] == 0.0 && e[1] == 0.0 && e[2] == 0.0 && e[3] == 0.0 && e[4] == 0.0 && e[5] == 0.0);
-}
-
 static IndPlasticStatus Stiffness(const IndMaterial *m, IndTangent tangent, PetscInt nb, PetscInt nt,
                                   const PetscReal *G, const PetscReal *hoop, const PetscReal *ue, const PetscReal *old,
-                                  PetscReal w, PetscReal *B, PetscReal *DB, PetscReal *Ke)
+                                  PetscReal w, PetscReal *B, PetscReal *DB, PetscReal *Ke, const PetscReal *kept)
 {
+  const PetscBool   virgin = Virgin(old);
   IndLogStrain      ls;
   IndPlasticTangent parts;
   PetscReal         H[9], F[9], E[6], T[6], Tt[9], S[6], D[36], M[36], dp;
-  PetscBool         by_parts, coaxial;
+  PetscBool         by_parts, coaxial = PETSC_FALSE;
   IndPlasticStatus  status;
 
   IndDeformationGradient(nb, G, hoop, ue, H, F);
-  if (IndLogStrainFromGradient(H, &ls, E)) return IND_PLASTIC_NOT_CONVERGED;
+  if (kept) IndLogStrainFromKept(H, kept, &ls, virgin ? NULL : E);
+  else if (IndLogStrainFromGradient(H, &ls, virgin ? NULL : E)) return IND_PLASTIC_NOT_CONVERGED;
+  /* A virgin point's material is evaluated in the eigenbasis of C, at E~ = diag(L) / 2: its stress T~ is diagonal
+     (E~ has no shears) and its tangent comes in that basis, E, T and the flow direction are not rotated. */
+  if (virgin) E[0] = 0.5 * ls.L[0], E[1] = 0.5 * ls.L[1], E[2] = 0.5 * ls.L[2], E[3] = E[4] = E[5] = 0.0;
   status = MaterialResponseParts(m, tangent, E, old, T, &parts, &by_parts, D, &dp);
   if (status != IND_PLASTIC_OK) return status;
-  IndLogStrainIntoBasis(&ls, T, Tt);
-  IndLogStrainStressFromBasis(&ls, Tt, S);
-  /* The tangent in the eigenbasis of C: its isotropic part is the same in every basis, its rank-one part turns with
-     the flow direction alone (a 3 x 3 rotation where the whole 6 x 6 would cost 12 times as many products) */
-  if (by_parts) {
-    PetscReal n[6] = {0, 0, 0, 0, 0, 0};
-    if (parts.thetabar != 0.0) {
-      PetscReal nt[9];
-      IndLogStrainIntoBasis(&ls, parts.n, nt);
-      n[0] = nt[0], n[1] = nt[4], n[2] = nt[8], n[3] = nt[1], n[4] = nt[5], n[5] = nt[2];
+  if (virgin) {
+    for (int k = 0; k < 9; ++k) Tt[k] = 0.0;
+    Tt[0] = T[0], Tt[4] = T[1], Tt[8] = T[2];
+    if (by_parts) IndPlasticTangentMatrix(&parts, parts.n, D);
+    /* a tangent by its parts with a flow direction free of shears: normal and shear parts uncoupled, the shear
+       part diagonal. The densifying model's whole tangent is in the eigenbasis already: not rotated. */
+    coaxial = by_parts;
+    if (!coaxial) IndLogStrainTangentEigen(&ls, Tt, D, PETSC_TRUE, M);
+  } else {
+    IndLogStrainIntoBasis(&ls, T, Tt);
+    /* The tangent in the eigenbasis of C: its isotropic part is the same in every basis, its rank-one part turns
+       with the flow direction alone (a 3 x 3 rotation where the whole 6 x 6 would cost 12 times as many products) */
+    if (by_parts) {
+      PetscReal n[6] = {0, 0, 0, 0, 0, 0};
+      if (parts.thetabar != 0.0) {
+        PetscReal nt[9];
+        IndLogStrainIntoBasis(&ls, parts.n, nt);
+        n[0] = nt[0], n[1] = nt[4], n[2] = nt[8], n[3] = nt[1], n[4] = nt[5], n[5] = nt[2];
+      }
+      IndPlasticTangentMatrix(&parts, n, D);
     }
-    IndPlasticTangentMatrix(&parts, n, D);
+    IndLogStrainTangentEigen(&ls, Tt, D, (PetscBool)(by_parts || dp == 0.0 || tangent == IND_TANGENT_ELASTIC), M);
   }
-  /* A point that did not yield has the elastic, isotropic tangent. If it never yielded either, its stress is an
-     isotropic function of E, coaxial with C: M is then a block and a diagonal. */
-  coaxial = (PetscBool)(dp == 0.0 && NeverYielded(old));
   if (coaxial) IndLogStrainTangentCoaxial(&ls, Tt, D, M);
-  else IndLogStrainTangentEigen(&ls, Tt, D, (PetscBool)(by_parts || dp == 0.0 || tangent == IND_TANGENT_ELASTIC), M);
+  IndLogStrainStressFromBasis(&ls, Tt, S);
   /* the linear tetrahedron and hexahedron by constant sizes: their loops are unrolled */
   if (nb == 4 && nt == 4) {
     if (coaxial) AddFiniteStiffness(4, 4, G, hoop, F, ls.N, S, M, PETSC_TRUE, w, B, DB, Ke);
@@ -209,6 +232,6 @@ static void Fields(const IndMaterial *m, PetscInt nb, const PetscReal *G, const 
 
 const IndKinematics *IndKinematicsFinite(void)
 {
-  static const IndKinematics kin = {"finite", Stress, Stiffness, Fields, PETSC_TRUE};
+  static const IndKinematics kin = {"finite", Stress, Stiffness, Fields, PETSC_TRUE, IND_LOGSTRAIN_NKEEP};
   return &kin;
 }

@@ -50,11 +50,12 @@ static inline void AddBtDB(PetscInt nb, PetscInt nt, const PetscReal *G, const P
 
 static IndPlasticStatus Stress(const IndMaterial *m, IndTangent tangent, PetscInt nb, const PetscReal *G,
                                const PetscReal *hoop, const PetscReal *ue, const PetscReal *old, PetscReal *trial,
-                               PetscReal P[9], PetscReal *dp)
+                               PetscReal P[9], PetscReal *dp, PetscReal *keep)
 {
   PetscReal        eps[6], s[6];
   IndPlasticStatus status;
 
+  (void)keep;
   Strain(nb, G, hoop, ue, eps);
   status = MaterialResponse(m, tangent, eps, old, trial, s, NULL, dp);
   P[0] = s[0], P[1] = s[3], P[2] = s[5];
@@ -65,12 +66,12 @@ static IndPlasticStatus Stress(const IndMaterial *m, IndTangent tangent, PetscIn
 
 static IndPlasticStatus Stiffness(const IndMaterial *m, IndTangent tangent, PetscInt nb, PetscInt nt,
                                   const PetscReal *G, const PetscReal *hoop, const PetscReal *ue, const PetscReal *old,
-                                  PetscReal w, PetscReal *B, PetscReal *DB, PetscReal *Ke)
+                                  PetscReal w, PetscReal *B, PetscReal *DB, PetscReal *Ke, const PetscReal *kept)
 {
   PetscReal        eps[6], s[6], D[36], dp;
   IndPlasticStatus status;
 
-  (void)B;
+  (void)B, (void)kept;
   Strain(nb, G, hoop, ue, eps);
   status = MaterialResponse(m, tangent, eps, old, NULL, s, D, &dp);
   AddBtDB(nb, nt, G, hoop, D, w, DB, Ke);
@@ -93,6 +94,6 @@ static void Fields(const IndMaterial *m, PetscInt nb, const PetscReal *G, const 
 
 const IndKinematics *IndKinematicsSmall(void)
 {
-  static const IndKinematics kin = {"small", Stress, Stiffness, Fields, PETSC_FALSE};
+  static const IndKinematics kin = {"small", Stress, Stiffness, Fields, PETSC_FALSE, 0};
   return &kin;
 }

@@ -207,12 +207,35 @@ static inline PetscReal F2Any(const IndLogStrain *ls, int i, int j, int k)
   return F2(ls, i, j, k);
 }
 
-int IndLogStrainFromGradient(const PetscReal H[9], IndLogStrain *ls, PetscReal E[6])
+/* What follows from lm1, L and N: f1, and E (engineering shears) unless E is NULL. */
+static void CompleteDecomposition(IndLogStrain *ls, PetscReal E[6])
 {
-  PetscReal Cm[9], Cv[6], Em[9] = {0}, F[9];
+  for (int i = 0; i < 3; ++i) {
+    ls->f1[4 * i] = 0.5 / (1.0 + ls->lm1[i]); /* f'(l) = 1 / (2 l) */
+    for (int j = i + 1; j < 3; ++j)
+      ls->f1[3 * i + j] = ls->f1[3 * j + i] = F1(ls->lm1[i], ls->lm1[j], ls->L[i], ls->L[j]);
+  }
+  if (E) {
+    PetscReal Em[9] = {0}, Eg[9];
+    for (int k = 0; k < 3; ++k) Em[4 * k] = 0.5 * ls->L[k];
+    OutOfBasis(ls->N, Em, Eg);
+    ToVoigt(Eg, 2.0, E);
+  }
+}
+
+static inline PetscReal DetF(const PetscReal H[9])
+{
+  PetscReal F[9];
 
   for (int k = 0; k < 9; ++k) F[k] = H[k] + (k % 4 == 0 ? 1.0 : 0.0);
-  ls->J = F[0] * (F[4] * F[8] - F[5] * F[7]) - F[1] * (F[3] * F[8] - F[5] * F[6]) + F[2] * (F[3] * F[7] - F[4] * F[6]);
+  return F[0] * (F[4] * F[8] - F[5] * F[7]) - F[1] * (F[3] * F[8] - F[5] * F[6]) + F[2] * (F[3] * F[7] - F[4] * F[6]);
+}
+
+int IndLogStrainFromGradient(const PetscReal H[9], IndLogStrain *ls, PetscReal E[6])
+{
+  PetscReal Cm[9], Cv[6];
+
+  ls->J = DetF(H);
   if (!(ls->J > 0)) return 1;
   /* C - I = H + H^T + H^T H from H itself: F = I + H rounds H's digits below 1e-16 away */
   for (int i = 0; i < 3; ++i)
@@ -225,20 +248,25 @@ int IndLogStrainFromGradient(const PetscReal H[9], IndLogStrain *ls, PetscReal E
   IndSymEigen(Cv, ls->lm1, ls->N);
   for (int k = 0; k < 3; ++k) {
     if (!(ls->lm1[k] > -1.0)) return 1;
-    ls->L[k]  = Log1p(ls->lm1[k]);
-    Em[4 * k] = 0.5 * ls->L[k];
+    ls->L[k] = Log1p(ls->lm1[k]);
   }
-  for (int i = 0; i < 3; ++i) {
-    ls->f1[4 * i] = 0.5 / (1.0 + ls->lm1[i]); /* f'(l) = 1 / (2 l) */
-    for (int j = i + 1; j < 3; ++j)
-      ls->f1[3 * i + j] = ls->f1[3 * j + i] = F1(ls->lm1[i], ls->lm1[j], ls->L[i], ls->L[j]);
-  }
-  {
-    PetscReal Eg[9];
-    OutOfBasis(ls->N, Em, Eg);
-    ToVoigt(Eg, 2.0, E);
-  }
+  CompleteDecomposition(ls, E);
   return 0;
+}
+
+void IndLogStrainKeep(const IndLogStrain *ls, PetscReal kept[IND_LOGSTRAIN_NKEEP])
+{
+  for (int k = 0; k < 3; ++k) kept[k] = ls->lm1[k], kept[3 + k] = ls->L[k];
+  for (int k = 0; k < 9; ++k) kept[6 + k] = ls->N[k];
+}
+
+void IndLogStrainFromKept(const PetscReal H[9], const PetscReal kept[IND_LOGSTRAIN_NKEEP], IndLogStrain *ls,
+                          PetscReal E[6])
+{
+  ls->J = DetF(H);
+  for (int k = 0; k < 3; ++k) ls->lm1[k] = kept[k], ls->L[k] = kept[3 + k];
+  for (int k = 0; k < 9; ++k) ls->N[k] = kept[6 + k];
+  CompleteDecomposition(ls, E);
 }
 
 void IndLogStrainStressFromBasis(const IndLogStrain *ls, const PetscReal Tt[9], PetscReal S[6])
