@@ -129,7 +129,8 @@ int main(int argc, char **argv)
         const PetscReal amp = c ? 0.05 : 1e-3;
         char            what[160];
         PetscReal       worst = 0, control = PETSC_MAX_REAL;
-        for (int t = 0; t < 50; ++t) worst = PetscMax(worst, CompareVirgin(&md, nb, nb == 4 ? 4 : 7, amp, 1e-300, &seed));
+        for (int t = 0; t < 50; ++t)
+          worst = PetscMax(worst, CompareVirgin(&md, nb, nb == 4 ? 4 : 7, amp, 1e-300, &seed));
         for (int t = 0; t < 10; ++t)
           control = PetscMin(control, CompareVirgin(&md, nb, nb == 4 ? 4 : 7, amp, 1e-3, &seed));
         PetscCall(PetscSNPrintf(what, sizeof(what), "%s, %" PetscInt_FMT " nodes, %s", mat ? "densifying" : "J2", nb,

@@ -293,6 +293,45 @@ static void RandomStretch(unsigned long long *seed, int t, PetscReal F[9])
   Deformation(R, Q, s, F);
 }
 
+/* The decomposition kept in 7 values (eigenvalues, eigenvectors as a quaternion) and rebuilt gives the one computed
+   from H: eigenvalues and logarithms in every bit, eigenvectors, f1 and E to round-off; at distinct and coincident
+   eigenvalues, small strains and the identity, with eigenbases that take each of the quaternion's four branches. */
+static void TestKept(unsigned long long *seed)
+{
+  PetscReal worst_n = 0, worst_e = 0, worst_bits = 0;
+  int       branch[4] = {0, 0, 0, 0};
+
+  for (int t = 0; t < 400; ++t) {
+    IndLogStrain a, b;
+    PetscReal    F[9], H[9], Ea[6], Eb[6], kept[IND_LOGSTRAIN_NKEEP], tr;
+    if (t == 0)
+      for (int k = 0; k < 9; ++k) F[k] = identity[k];
+    else RandomStretch(seed, t, F);
+    for (int k = 0; k < 9; ++k) H[k] = F[k] - identity[k];
+    if (t % 4 == 3)
+      for (int k = 0; k < 9; ++k) H[k] *= 1e-5; /* a small strain */
+    (void)IndLogStrainFromGradient(H, &a, Ea);
+    IndLogStrainKeep(&a, kept);
+    IndLogStrainFromKept(H, kept, &b, Eb);
+    tr = a.N[0] + a.N[4] + a.N[8];
+    if (tr >= a.N[0] && tr >= a.N[4] && tr >= a.N[8]) branch[0]++;
+    else if (a.N[0] >= a.N[4] && a.N[0] >= a.N[8]) branch[1]++;
+    else branch[a.N[4] >= a.N[8] ? 2 : 3]++;
+    for (int k = 0; k < 3; ++k)
+      worst_bits = PetscMax(worst_bits, (a.lm1[k] != b.lm1[k] || a.L[k] != b.L[k]) ? 1.0 : 0.0);
+    worst_bits = PetscMax(worst_bits, a.J != b.J ? 1.0 : 0.0);
+    for (int k = 0; k < 9; ++k) worst_n = PetscMax(worst_n, PetscAbsReal(a.N[k] - b.N[k]));
+    for (int k = 0; k < 9; ++k) worst_e = PetscMax(worst_e, PetscAbsReal(a.f1[k] - b.f1[k]) / MaxAbs(a.f1, 9));
+    for (int k = 0; k < 6; ++k)
+      worst_e = PetscMax(worst_e, PetscAbsReal(Ea[k] - Eb[k]) / PetscMax(MaxAbs(Ea, 6), 1e-300));
+  }
+  Report("kept decomposition: eigenvalues, logarithms and det F rebuilt bit for bit (1: not)", worst_bits, 0.5);
+  Report("kept decomposition: eigenvectors from the quaternion", worst_n, 4e-15);
+  Report("kept decomposition: f1 and E, relative", worst_e, 1e-14);
+  Report("kept decomposition: each of the quaternion's branches taken (1 / fewest)",
+         1.0 / PetscMax(1, PetscMin(PetscMin(branch[0], branch[1]), PetscMin(branch[2], branch[3]))), 0.5);
+}
+
 /* An elastic (isotropic) tangent taken as the same in every basis gives the DS of its full rotation into
    the eigenbasis of C, at distinct and coincident eigenvalues. */
 static void TestIsotropicTangent(unsigned long long *seed)
@@ -560,6 +599,7 @@ int main(int argc, char **argv)
   TestDerivatives(&seed);
   TestIsotropicTangent(&seed);
   TestCoaxialTangent(&seed);
+  TestKept(&seed);
   TestTangentByParts(&seed);
   TestObjectivity(&seed);
   TestUniaxial();

@@ -38,9 +38,10 @@ void IndSymEigen(const PetscReal A[6], PetscReal lambda[3], PetscReal V[9]);
    the caller treats as a failed point. E may be NULL: the strain in the eigenbasis is diag(L) / 2. */
 int IndLogStrainFromGradient(const PetscReal H[9], IndLogStrain *ls, PetscReal E[6]);
 /* The part of the decomposition worth keeping for a second use at the same gradient (the residual's for the
-   Jacobian's: the eigen-decomposition and the logarithms are two fifths of a finite-strain stiffness), and the
-   decomposition rebuilt from it and H: what IndLogStrainFromGradient gives, to the bit, without its cost. */
-#define IND_LOGSTRAIN_NKEEP 15
+   Jacobian's: the eigen-decomposition is a third of a finite-strain stiffness), in 7 values (the eigenvalues and the
+   eigenvectors as a unit quaternion: 56 bytes a point), and the decomposition rebuilt from them and H: what
+   IndLogStrainFromGradient gives, its eigenvectors to round-off, at a tenth of its cost. */
+#define IND_LOGSTRAIN_NKEEP 7
 void IndLogStrainKeep(const IndLogStrain *ls, PetscReal kept[IND_LOGSTRAIN_NKEEP]);
 void IndLogStrainFromKept(const PetscReal H[9], const PetscReal kept[IND_LOGSTRAIN_NKEEP], IndLogStrain *ls,
                           PetscReal E[6]);

@@ -227,7 +227,7 @@ PetscErrorCode IndAssemblyJacobian(IndAssembly a, Vec Uloc, Mat J)
     PetscCall(PetscArraycmp(u, a->kept_u, nu, &same)); /* byte by byte */
     if (same) kept = a->kept, a->kept_uses++;
   }
-  if (a->kin->nkeep && !kept) PetscCall(PetscInfo(a->dm, "No residual at this displacement kept: C decomposed again\n"));
+  if (a->kin->nkeep && !kept) PetscCall(PetscInfo(a->dm, "No residual kept at this displacement: C decomposed\n"));
   PetscCall(VecGetArrayRead(a->Xloc, &xn));
   PetscCall(VecGetArrayRead(a->history->committed, &hold));
   for (PetscInt i = 0; i < disc->ncell; ++i) {

@@ -254,18 +254,58 @@ int IndLogStrainFromGradient(const PetscReal H[9], IndLogStrain *ls, PetscReal E
   return 0;
 }
 
+/* The rotation N (right-handed: IndSymEigen's column 3 is column 1 x column 2) as a unit quaternion (w, x, y, z), by
+   Shepperd's choice of the largest of 1 + trace and 1 + 2 N_kk - trace, whose square root is then far from 0. */
+static void QuaternionFromRotation(const PetscReal N[9], PetscReal q[4])
+{
+  const PetscReal t = N[0] + N[4] + N[8];
+  PetscReal       r;
+
+  if (t >= N[0] && t >= N[4] && t >= N[8]) {
+    r    = PetscSqrtReal(1.0 + t);
+    q[0] = 0.5 * r, r = 0.5 / r;
+    q[1] = (N[7] - N[5]) * r, q[2] = (N[2] - N[6]) * r, q[3] = (N[3] - N[1]) * r;
+  } else if (N[0] >= N[4] && N[0] >= N[8]) {
+    r    = PetscSqrtReal(1.0 + N[0] - N[4] - N[8]);
+    q[1] = 0.5 * r, r = 0.5 / r;
+    q[0] = (N[7] - N[5]) * r, q[2] = (N[1] + N[3]) * r, q[3] = (N[2] + N[6]) * r;
+  } else if (N[4] >= N[8]) {
+    r    = PetscSqrtReal(1.0 - N[0] + N[4] - N[8]);
+    q[2] = 0.5 * r, r = 0.5 / r;
+    q[0] = (N[2] - N[6]) * r, q[1] = (N[1] + N[3]) * r, q[3] = (N[5] + N[7]) * r;
+  } else {
+    r    = PetscSqrtReal(1.0 - N[0] - N[4] + N[8]);
+    q[3] = 0.5 * r, r = 0.5 / r;
+    q[0] = (N[3] - N[1]) * r, q[1] = (N[2] + N[6]) * r, q[2] = (N[5] + N[7]) * r;
+  }
+}
+
+/* The rotation of a quaternion, normalised on the way (2 / |q|^2 for 2). */
+static void RotationFromQuaternion(const PetscReal q[4], PetscReal N[9])
+{
+  const PetscReal s = 2.0 / (q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+  const PetscReal w = q[0], x = q[1], y = q[2], z = q[3];
+
+  N[0] = 1.0 - s * (y * y + z * z), N[1] = s * (x * y - z * w), N[2] = s * (x * z + y * w);
+  N[3] = s * (x * y + z * w), N[4] = 1.0 - s * (x * x + z * z), N[5] = s * (y * z - x * w);
+  N[6] = s * (x * z - y * w), N[7] = s * (y * z + x * w), N[8] = 1.0 - s * (x * x + y * y);
+}
+
 void IndLogStrainKeep(const IndLogStrain *ls, PetscReal kept[IND_LOGSTRAIN_NKEEP])
 {
-  for (int k = 0; k < 3; ++k) kept[k] = ls->lm1[k], kept[3 + k] = ls->L[k];
-  for (int k = 0; k < 9; ++k) kept[6 + k] = ls->N[k];
+  for (int k = 0; k < 3; ++k) kept[k] = ls->lm1[k];
+  QuaternionFromRotation(ls->N, kept + 3);
 }
 
 void IndLogStrainFromKept(const PetscReal H[9], const PetscReal kept[IND_LOGSTRAIN_NKEEP], IndLogStrain *ls,
                           PetscReal E[6])
 {
   ls->J = DetF(H);
-  for (int k = 0; k < 3; ++k) ls->lm1[k] = kept[k], ls->L[k] = kept[3 + k];
-  for (int k = 0; k < 9; ++k) ls->N[k] = kept[6 + k];
+  for (int k = 0; k < 3; ++k) {
+    ls->lm1[k] = kept[k];
+    ls->L[k]   = Log1p(kept[k]);
+  }
+  RotationFromQuaternion(kept + 3, ls->N);
   CompleteDecomposition(ls, E);
 }
 
