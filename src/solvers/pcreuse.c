@@ -37,6 +37,8 @@ struct _p_IndPCReuse {
   PetscInt         solves, builds;
   PetscErrorCode (*fresh_hook)(KSP, void *); /* IndPCReuseSetFreshHook */
   void            *fresh_ctx;
+  PetscErrorCode (*solved_hook)(KSP, void *); /* IndPCReuseSetSolvedHook */
+  void            *solved_ctx;
 };
 
 static PetscErrorCode IsMultigrid(KSP ksp, PetscBool *mg)
@@ -81,10 +83,12 @@ static PetscErrorCode PostSolve(KSP ksp, Vec b, Vec x, void *ctx)
 
   PetscFunctionBeginUser;
   (void)b, (void)x;
-  if (!r->governed) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCall(KSPGetIterationNumber(ksp, &its));
-  PetscCall(KSPGetConvergedReason(ksp, &reason));
-  IndRebuildCountRecord(&r->count, r->fresh, its, (PetscBool)(reason > 0));
+  if (r->governed) {
+    PetscCall(KSPGetIterationNumber(ksp, &its));
+    PetscCall(KSPGetConvergedReason(ksp, &reason));
+    IndRebuildCountRecord(&r->count, r->fresh, its, (PetscBool)(reason > 0));
+  }
+  if (r->solved_hook) PetscCall(r->solved_hook(ksp, r->solved_ctx));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -116,6 +120,14 @@ PetscErrorCode IndPCReuseSetFreshHook(IndPCReuse r, PetscErrorCode (*fn)(KSP, vo
   PetscFunctionBeginUser;
   r->fresh_hook = fn;
   r->fresh_ctx  = ctx;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode IndPCReuseSetSolvedHook(IndPCReuse r, PetscErrorCode (*fn)(KSP, void *), void *ctx)
+{
+  PetscFunctionBeginUser;
+  r->solved_hook = fn;
+  r->solved_ctx  = ctx;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -39,6 +39,8 @@ PetscErrorCode IndPCReuseCreate(KSP ksp, PetscBool active, IndPCReuse *r);
 /* fn(ksp, ctx) on a multigrid built afresh by the rule, before the solve uses it (the multigrid is set up in the
    pre-solve hook, then handed to fn): for what must be done to a new hierarchy's matrices. */
 PetscErrorCode IndPCReuseSetFreshHook(IndPCReuse r, PetscErrorCode (*fn)(KSP, void *), void *ctx);
+/* fn(ksp, ctx) after every solve, under the rule or not: for what a solve leaves that the next one does not need. */
+PetscErrorCode IndPCReuseSetSolvedHook(IndPCReuse r, PetscErrorCode (*fn)(KSP, void *), void *ctx);
 /* The next solve builds the preconditioner (after KSPReset, a restart). */
 PetscErrorCode IndPCReuseReset(IndPCReuse r);
 /* Solves, and builds of the preconditioner among them, under the rule so far. */

@@ -92,6 +92,49 @@ PetscErrorCode IndSolverRefreshFineSmoother(KSP ksp)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Each Chebyshev smoother estimates its largest eigenvalue with a few GMRES iterations when its operator changes (at
+   every Newton iteration on the finest level), and GMRES then keeps their basis until the next estimate, under the
+   outer solve's basis and the residual's kept decomposition: sphere_800k on 1 rank held 2,311 MB of PETSc's
+   allocations at its largest, 2,200 with these bases given back. Every smoother's estimate is done once its
+   multigrid has been applied (the finest one's at its first use), so the outer solve gives them back at its first
+   iteration. */
+static PetscErrorCode ReleaseSmootherEstimators(KSP ksp, PetscInt it, PetscReal rnorm, void *ctx)
+{
+  PetscInt levels;
+  PC       pc;
+
+  PetscFunctionBeginUser;
+  (void)rnorm, (void)ctx;
+  if (it) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(MultigridLevels(ksp, &pc, &levels));
+  for (PetscInt l = 1; l < levels; ++l) {
+    KSP smoother, est;
+    PetscCall(PCMGGetSmoother(pc, l, &smoother));
+    PetscCall(KSPChebyshevEstEigGetKSP(smoother, &est));
+    if (est) PetscCall(IndSolverReleaseKrylovBasis(est));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* After each linear solve, its Krylov basis is given back: the line search's residuals that follow keep their points'
+   decomposition of C for the next Jacobian (src/physics/assembly.c), and with the basis of a long solve under them
+   sphere_800k peaked there (1 rank: 2,200 MB of PETSc's allocations at the largest, 2,129 with the basis given
+   back). Once per load step, before, the basis of the step's longest solve stayed under all its residuals. Each
+   solve grows it again, ten vectors at a time. Not when the user asked for the solve's eigenvalues or singular values
+   (-ksp_view_eigenvalues ...): PETSc reads them from GMRES's Hessenberg matrix after this hook, and the release
+   frees that with the vectors. */
+static PetscErrorCode SolveDone(KSP ksp, void *ctx)
+{
+  PetscBool ev, sv;
+
+  PetscFunctionBeginUser;
+  (void)ctx;
+  PetscCall(KSPGetComputeEigenvalues(ksp, &ev));
+  PetscCall(KSPGetComputeSingularValues(ksp, &sv));
+  if (!ev && !sv) PetscCall(IndSolverReleaseKrylovBasis(ksp));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* GAMG's coarse operators are AIJ matrices whose rows come in groups of 6 with one column pattern (a block of
    rigid-body modes per aggregate), so PETSc multiplies them with its inode kernel, which on the machines measured
    was 1.4 to 2.4 times slower than the plain row-by-row product (doc/performance.md). The coarse levels cost a
@@ -393,6 +436,7 @@ PetscErrorCode IndSolverCreate(DM dm, IndAssembly assembly, IndBC bc, IndContact
   PetscCall(SNESSetConvergenceTest(s->snes, ConvergedUnlessStalled, s, NULL));
   PetscCall(SmootherScaling(s->snes));
   PetscCall(SNESSetFromOptions(s->snes));
+  PetscCall(KSPMonitorSet(ksp, ReleaseSmootherEstimators, NULL, NULL));
   {
     /* The multigrid is rebuilt when the Krylov iterations of keeping it would cost more
        (src/solvers/pcreuse.h), unless the user chose SNES's fixed lag. */
@@ -406,6 +450,7 @@ PetscErrorCode IndSolverCreate(DM dm, IndAssembly assembly, IndBC bc, IndContact
     PetscCall(PetscOptionsGetBool(NULL, prefix, "-pc_gamg_reuse_interpolation", &reuse, NULL));
     s->keep_rigid = (PetscBool)!reuse;
     PetscCall(IndPCReuseSetFreshHook(s->reuse, FreshMultigrid, s));
+    PetscCall(IndPCReuseSetSolvedHook(s->reuse, SolveDone, NULL));
   }
   if (contact) {
     /* rho from the stiffness of the undeformed body, before any condition touches its diagonal */
@@ -420,8 +465,8 @@ PetscErrorCode IndSolverCreate(DM dm, IndAssembly assembly, IndBC bc, IndContact
 
 /* GMRES keeps the basis its longest solve grew (ten vectors at a time): a solve of 51 iterations in the second step
    of the paper's case at h_tip 3 held 55 vectors a rank, 76 MB, for the rest of the run, under every later transient
-   (the field output's, where the run's memory peaked). PETSc frees GMRES's basis, and nothing else, when its restart
-   changes. */
+   (the field output's, where the run's memory peaked). PETSc frees GMRES's basis and Hessenberg matrix, and not the
+   preconditioner, when its restart changes. */
 PetscErrorCode IndSolverReleaseKrylovBasis(KSP ksp)
 {
   PetscBool gmres;
@@ -520,11 +565,6 @@ PetscErrorCode IndSolverSolve(IndSolver s, PetscReal load_factor, Vec U, IndSolv
     PetscCall(DMRestoreGlobalVector(s->dm, &F));
     if (!r->converged && r->reason > 0 && !r->why[0])
       PetscCall(IndContactOuterFailure(c, &r->contact, r->why, sizeof(r->why)));
-  }
-  { /* one long solve does not hold its basis through the rest of the run: the next step grows it as it needs */
-    KSP ksp;
-    PetscCall(SNESGetKSP(s->snes, &ksp));
-    PetscCall(IndSolverReleaseKrylovBasis(ksp));
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
