@@ -2,9 +2,9 @@ static const char help[] =
   "A multigrid whose coarse operators and interpolations multiply row by row (IndSolverMultigridRowProducts)\n"
   "solves as before, keeps doing so through the numeric refresh of its coarse levels, and uses no inodes there;\n"
   "its coarse operators multiply by their 6 x 6 block rows (IndBlockMultInstall). In single precision\n"
-  "(-newton_pc_single): every coarse operator and interpolation reads single precision, the finest smoother and\n"
-  "residual multiply by the Jacobian's single-precision operator, and the solve takes the same iterations (one\n"
-  "more at most) to the same solution.\n";
+  "(-newton_pc_single): every coarse operator reads single precision and every interpolation double, the finest\n"
+  "smoother and residual multiply by the Jacobian's single-precision operator, and the solve takes the same\n"
+  "iterations (one more at most) to the same solution.\n";
 
 #include "solver_test.h"
 #include "ind_blockmult.h"
@@ -42,14 +42,15 @@ static PetscErrorCode CoarseInodes(KSP ksp, PetscInt *total)
 }
 
 /* Of the coarse operators above the coarsest and the interpolations: how many are multiplied by block rows, and how
-   many read single precision, on every rank; and whether the finest smoother's operator is S */
-static PetscErrorCode CoarseCounts(KSP ksp, Mat S, PetscInt *blocks, PetscInt *single, PetscBool *fine)
+   many read single precision (operators, interpolations), on every rank; and whether the finest smoother's operator
+   is S */
+static PetscErrorCode CoarseCounts(KSP ksp, Mat S, PetscInt *blocks, PetscInt single[2], PetscBool *fine)
 {
   PC       pc;
   PetscInt levels;
 
   PetscFunctionBeginUser;
-  *blocks = *single = 0;
+  *blocks = single[0] = single[1] = 0;
   PetscCall(KSPGetPC(ksp, &pc));
   PetscCall(PCMGGetLevels(pc, &levels));
   for (PetscInt l = 1; l < levels; ++l) {
@@ -65,7 +66,7 @@ static PetscErrorCode CoarseCounts(KSP ksp, Mat S, PetscInt *blocks, PetscInt *s
       PetscCall(IndBlockMultGetSingle(M[k], &q[1]));
       PetscCall(MPIU_Allreduce(MPI_IN_PLACE, q, 2, MPIU_BOOL, MPI_LAND, PetscObjectComm((PetscObject)ksp)));
       *blocks += q[0];
-      *single += q[1];
+      single[k] += q[1];
     }
   }
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -94,7 +95,7 @@ int main(int argc, char **argv)
   Mat       J   = NULL;
   Vec       b, x, xref, Uloc;
   Mat       S;
-  PetscInt  its[5], before, after, levels, blocks[4], single[4]; /* [0], [1] in double, [2], [3] in single */
+  PetscInt  its[5], before, after, levels, blocks[4], single[4][2]; /* [0], [1] in double, [2], [3] in single */
   PetscReal d[4];
   PetscBool ok, fine[4];
 
@@ -119,7 +120,7 @@ int main(int argc, char **argv)
   PetscCall(KSPSetReusePreconditioner(ksp, PETSC_TRUE));
   PetscCall(SolveCounted(ksp, b, x, &its[1]));
   PetscCall(RelativeDifference(x, xref, &d[0]));
-  PetscCall(CoarseCounts(ksp, NULL, &blocks[0], &single[0], &fine[0]));
+  PetscCall(CoarseCounts(ksp, NULL, &blocks[0], single[0], &fine[0]));
 
   /* the matrix assembled again: GAMG refreshes its coarse operators in place (and refactors the coarsest) */
   PetscCall(IndAssemblyJacobian(IndAppGetAssembly(app), Uloc, J));
@@ -128,7 +129,7 @@ int main(int argc, char **argv)
   PetscCall(SolveCounted(ksp, b, x, &its[2]));
   PetscCall(RelativeDifference(x, xref, &d[1]));
   PetscCall(CoarseInodes(ksp, &after));
-  PetscCall(CoarseCounts(ksp, NULL, &blocks[1], &single[1], &fine[1]));
+  PetscCall(CoarseCounts(ksp, NULL, &blocks[1], single[1], &fine[1]));
 
   /* single precision: on the set-up hierarchy, then through a refresh of its coarse levels */
   PetscCall(IndBlockMultCreateSingleOperator(J, &S));
@@ -136,18 +137,19 @@ int main(int argc, char **argv)
   PetscCall(KSPSetReusePreconditioner(ksp, PETSC_TRUE));
   PetscCall(SolveCounted(ksp, b, x, &its[3]));
   PetscCall(RelativeDifference(x, xref, &d[2]));
-  PetscCall(CoarseCounts(ksp, S, &blocks[2], &single[2], &fine[2]));
+  PetscCall(CoarseCounts(ksp, S, &blocks[2], single[2], &fine[2]));
   PetscCall(KSPSetReusePreconditioner(ksp, PETSC_FALSE));
   PetscCall(KSPSetUp(ksp));
   PetscCall(IndSolverMultigridRowProducts(ksp, PETSC_TRUE, S));
   PetscCall(SolveCounted(ksp, b, x, &its[4]));
   PetscCall(RelativeDifference(x, xref, &d[3]));
-  PetscCall(CoarseCounts(ksp, S, &blocks[3], &single[3], &fine[3]));
+  PetscCall(CoarseCounts(ksp, S, &blocks[3], single[3], &fine[3]));
   PetscCall(PetscPrintf(PETSC_COMM_WORLD,
     "single precision: Krylov iterations %" PetscInt_FMT " and %" PetscInt_FMT " (refreshed); solutions differ by "
-    "%.2e and %.2e; coarse operators and interpolations in single precision %" PetscInt_FMT " and %" PetscInt_FMT
-    "; finest smoother on the single-precision operator %d and %d\n", its[3], its[4], (double)d[2], (double)d[3],
-    single[2], single[3], (int)fine[2], (int)fine[3]));
+    "%.2e and %.2e; coarse operators in single precision %" PetscInt_FMT " and %" PetscInt_FMT ", interpolations %"
+    PetscInt_FMT " and %" PetscInt_FMT "; finest smoother on the single-precision operator %d and %d\n", its[3],
+    its[4], (double)d[2], (double)d[3], single[2][0], single[3][0], single[2][1], single[3][1], (int)fine[2],
+    (int)fine[3]));
   PetscCall(MatDestroy(&S));
   PetscCall(PetscPrintf(PETSC_COMM_WORLD,
     "%" PetscInt_FMT " levels; Krylov iterations: fresh %" PetscInt_FMT ", row by row %" PetscInt_FMT
@@ -158,8 +160,9 @@ int main(int argc, char **argv)
   ok = (PetscBool)(levels >= 3 && its[0] > 0 && its[1] == its[0] && its[2] == its[0] && d[0] < 1e-10 &&
                    d[1] < 1e-10 && before > 0 && after == 0 && blocks[0] == 2 * levels - 3 &&
                    blocks[1] == 2 * levels - 3 && PetscAbsInt(its[3] - its[0]) <= 1 &&
-                   PetscAbsInt(its[4] - its[0]) <= 1 && d[2] < 1e-8 && d[3] < 1e-8 && single[0] == 0 &&
-                   single[1] == 0 && single[2] == 2 * levels - 3 && single[3] == 2 * levels - 3 &&
+                   PetscAbsInt(its[4] - its[0]) <= 1 && d[2] < 1e-8 && d[3] < 1e-8 && single[0][0] == 0 &&
+                   single[0][1] == 0 && single[1][0] == 0 && single[1][1] == 0 && single[2][0] == levels - 2 &&
+                   single[3][0] == levels - 2 && single[2][1] == 0 && single[3][1] == 0 &&
                    blocks[2] == 2 * levels - 3 && blocks[3] == 2 * levels - 3 && fine[2] && fine[3]);
   PetscCall(DMRestoreLocalVector(IndAppGetDM(app), &Uloc));
   PetscCall(VecDestroy(&x));

@@ -46,6 +46,43 @@ PetscErrorCode IndAssemblyCreate(IndDisc disc, IndMaterials mats, IndHistory his
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The decomposition a residual keeps for the Jacobian lives from one to the other, while the memory around it comes
+   and goes (the Krylov basis, the multigrid's set-up). In one block it needs a hole as large as itself, which a heap
+   that gives nothing back (doc/performance.md) did not have on 2 ranks: it went on top, into memory not used before.
+   In pieces of about 1 MiB it fills the holes the solve left: sphere_800k 3,243 -> 3,078 B/dof on 2 ranks. */
+#define KEPT_PIECE_BYTES (1 << 20)
+
+static PetscErrorCode AllocateKept(IndAssembly a, PetscInt nu)
+{
+  const IndDiscLayout *disc = a->layout;
+  const PetscInt       per_cell = disc->nq * a->kin->nkeep;
+
+  PetscFunctionBeginUser;
+  a->kept_cells  = PetscMax(1, KEPT_PIECE_BYTES / (PetscInt)(per_cell * sizeof(PetscReal)));
+  a->kept_pieces = (disc->ncell + a->kept_cells - 1) / a->kept_cells;
+  PetscCall(PetscMalloc1(a->kept_pieces, &a->kept));
+  for (PetscInt k = 0; k < a->kept_pieces; ++k)
+    PetscCall(PetscMalloc1(PetscMin(a->kept_cells, disc->ncell - k * a->kept_cells) * per_cell, &a->kept[k]));
+  PetscCall(PetscMalloc1(nu, &a->kept_u));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode FreeKept(IndAssembly a)
+{
+  PetscFunctionBeginUser;
+  for (PetscInt k = 0; a->kept && k < a->kept_pieces; ++k) PetscCall(PetscFree(a->kept[k]));
+  PetscCall(PetscFree(a->kept));
+  PetscCall(PetscFree(a->kept_u));
+  a->kept_pieces = a->kept_n = 0;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* What the residual kept at point q of local cell i */
+static inline PetscReal *KeptAt(IndAssembly a, PetscInt i, PetscInt q)
+{
+  return a->kept[i / a->kept_cells] + ((i % a->kept_cells) * a->layout->nq + q) * a->kin->nkeep;
+}
+
 PetscErrorCode IndAssemblyDestroy(IndAssembly *a)
 {
   PetscFunctionBeginUser;
@@ -53,7 +90,7 @@ PetscErrorCode IndAssemblyDestroy(IndAssembly *a)
   PetscCall(PetscFree7((*a)->ue, (*a)->xe, (*a)->fe, (*a)->Ke, (*a)->G, (*a)->DB, (*a)->B));
   PetscCall(PetscFree((*a)->hoop));
   PetscCall(PetscFree((*a)->xq));
-  PetscCall(PetscFree2((*a)->kept, (*a)->kept_u));
+  PetscCall(FreeKept(*a));
   PetscCall(IndMatInsertDestroy(&(*a)->insert));
   PetscCall(PetscFree(*a));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -89,7 +126,7 @@ static PetscErrorCode PointLoop(IndAssembly a, Vec Uloc, Vec Floc)
   PetscCall(VecGetLocalSize(Uloc, &nu));
   if (nkeep) {
     /* the Jacobian that follows a residual is nearly always at its displacement (Newton's accepted iterate) */
-    if (!a->kept) PetscCall(PetscMalloc2(disc->ncell * nq * nkeep, &a->kept, nu, &a->kept_u));
+    if (!a->kept && !a->kept_u) PetscCall(AllocateKept(a, nu));
     a->kept_n = 0; /* until the loop is through */
   }
   PetscCall(VecGetArrayRead(Uloc, &u));
@@ -115,7 +152,7 @@ static PetscErrorCode PointLoop(IndAssembly a, Vec Uloc, Vec Floc)
       IndHistoryUnpack(nval, h, old);
       if (!Floc) PetscCall(PetscArraycpy(upd, old, IND_HISTORY_NVAL)); /* an elastic material's update writes none */
       status = a->kin->stress(m, a->tangent, nb, a->G, a->khoop, a->ue, old, Floc ? NULL : upd, P, &dp,
-                              nkeep ? a->kept + (i * nq + q) * nkeep : NULL);
+                              nkeep ? KeptAt(a, i, q) : NULL);
       if (status != IND_PLASTIC_OK) {
         a->nfailed++;
         continue;
@@ -208,7 +245,7 @@ PetscErrorCode IndAssemblyJacobian(IndAssembly a, Vec Uloc, Mat J)
   const PetscScalar *u, *xn, *hold;
   IndMatInsert       ins = J == a->J ? a->insert : NULL; /* cached positions are the matrix's own */
   PetscInt          *g   = NULL;                           /* a cell's global dofs, for MatSetValues */
-  const PetscReal   *kept = NULL;
+  PetscBool          kept = PETSC_FALSE;
   PetscInt           nu;
 
   PetscFunctionBeginUser;
@@ -225,7 +262,7 @@ PetscErrorCode IndAssemblyJacobian(IndAssembly a, Vec Uloc, Mat J)
   if (a->kept_n && a->kept_n == nu) {
     PetscBool same;
     PetscCall(PetscArraycmp(u, a->kept_u, nu, &same)); /* byte by byte */
-    if (same) kept = a->kept, a->kept_uses++;
+    if (same) kept = PETSC_TRUE, a->kept_uses++;
   }
   if (a->kin->nkeep && !kept) PetscCall(PetscInfo(a->dm, "No residual kept at this displacement: C decomposed\n"));
   PetscCall(VecGetArrayRead(a->Xloc, &xn));
@@ -246,7 +283,7 @@ PetscErrorCode IndAssemblyJacobian(IndAssembly a, Vec Uloc, Mat J)
       /* A failed point was already reported by the residual at this displacement, which stops the
          Newton iteration before any Jacobian; its NaN tangent cannot go unnoticed either. */
       (void)a->kin->stiffness(m, a->tangent, nb, nt, a->G, a->khoop, a->ue, old, w, a->B, a->DB, a->Ke,
-                              kept ? kept + (i * nq + q) * a->kin->nkeep : NULL);
+                              kept ? KeptAt(a, i, q) : NULL);
     }
     if (nt < nb) IndCellMatrixCompleteLastNode(nb, a->Ke);
     else
@@ -260,10 +297,9 @@ PetscErrorCode IndAssemblyJacobian(IndAssembly a, Vec Uloc, Mat J)
   }
   PetscCall(PetscFree(g));
   /* Nothing reads the decomposition again before the next residual remakes it: the Krylov solve that follows
-     reuses its memory for its basis, which it gives back in turn (src/solvers/solver.c, SolveDone). With both,
-     sphere_800k on 1 rank peaks at 2,197 MiB; with the basis alone given back, 2,216 (doc/performance.md). */
-  PetscCall(PetscFree2(a->kept, a->kept_u));
-  a->kept_n = 0;
+     reuses its memory for its basis, which it gives back in turn (src/solvers/solver.c, SolveDone), and the pieces
+     of the next decomposition go where the basis was (doc/performance.md). */
+  PetscCall(FreeKept(a));
   PetscCall(VecRestoreArrayRead(a->history->committed, &hold));
   PetscCall(VecRestoreArrayRead(a->Xloc, &xn));
   PetscCall(VecRestoreArrayRead(Uloc, &u));

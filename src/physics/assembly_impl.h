@@ -24,8 +24,10 @@ struct _p_IndAssembly {
   IndMatInsert         insert;   /* and its cached insertion (NULL: MatSetValues) */
   PetscBool            inodes;   /* products by PETSc's inode kernel (-jac_inodes) */
   PetscBool            blocks;   /* products by block rows (-jac_block_products) */
-  /* what the last residual's points kept for a Jacobian at the same displacement (kin->nkeep values a point) */
-  PetscReal           *kept;
+  /* what the last residual's points kept for a Jacobian at the same displacement (kin->nkeep values a point), in
+     pieces of kept_cells cells each (NULL: nothing allocated) */
+  PetscReal          **kept;
+  PetscInt             kept_pieces, kept_cells;
   PetscScalar         *kept_u;    /* that residual's local displacement, to the bit */
   PetscInt             kept_n;    /* its length; 0: nothing kept */
   PetscInt             kept_uses; /* Jacobians that used them */

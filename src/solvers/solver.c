@@ -141,8 +141,9 @@ static PetscErrorCode SolveDone(KSP ksp, void *ctx)
    third of a V-cycle on the README's case. The option set after GAMG made a matrix holds for the numeric
    products that refresh it (MAT_REUSE_MATRIX) until the hierarchy is built anew. Their blocks (6 x 6, and 3 x 6 in
    the interpolations) are read faster still by block rows, as the Jacobian's 3 x 3 ones (IndBlockMultInstall).
-   In single precision the products read about half the bytes; only the preconditioner sees them, and the Krylov
-   method's products with the Jacobian stay in double, so each solve meets its tolerance as before. */
+   In single precision the products with the operators read about half the bytes; only the preconditioner sees
+   them, and the Krylov method's products with the Jacobian stay in double, so each solve meets its tolerance as
+   before. */
 PetscErrorCode IndSolverMultigridRowProducts(KSP ksp, PetscBool blocks, Mat single)
 {
   PC       pc;
@@ -176,7 +177,9 @@ PetscErrorCode IndSolverMultigridRowProducts(KSP ksp, PetscBool blocks, Mat sing
       PetscCall(PetscObjectBaseTypeCompareAny((PetscObject)M[k], &aij, MATSEQAIJ, MATMPIAIJ, ""));
       if (aij) PetscCall(MatSetOption(M[k], MAT_USE_INODES, PETSC_FALSE));
       if (aij && blocks) PetscCall(IndBlockMultInstall(M[k], &installed));
-      if (aij && blocks) PetscCall(IndBlockMultSetSingle(M[k], (PetscBool)(single != NULL), NULL));
+      /* not the interpolations: their copies cost 38 MiB a rank of sphere_800k on 2 ranks for under 1% of the README
+         run's time (doc/performance.md) */
+      if (aij && blocks) PetscCall(IndBlockMultSetSingle(M[k], (PetscBool)(single != NULL && k < 2), NULL));
     }
   }
   PetscFunctionReturn(PETSC_SUCCESS);
