@@ -86,10 +86,12 @@ def main():
         for kind, a, b in c["segments"]:
             print(f"  {kind:9s} points {a:5d} to {b:5d}: depth {c['depth'][a]:10.4g} to {c['depth'][b]:10.4g} nm, "
                   f"load {c['load'][a]:10.4g} to {c['load'][b]:10.4g} uN")
-        out = args.out
-        if args.op and not out:
-            out = os.path.join(tempfile.mkdtemp(prefix="measured-curve-"), "curve.csv")
-        if out:
+        out, scratch = args.out, None
+        if args.op and not out:  # indent-op reads a file: a temporary one, removed when it is done
+            scratch = tempfile.TemporaryDirectory(prefix="measured-curve-")
+            out = os.path.join(scratch.name, "curve.csv")
+            indentcurves.write_csv(out, depth, load)
+        elif out:
             indentcurves.write_csv(out, depth, load)
             print(f"  written {out} ({len(depth)} points from first contact)")
         if args.tip_table:
@@ -110,6 +112,8 @@ def main():
             else:
                 raise indentcurves.CurveError("--op needs --area or --indenter-type for the area function")
             run = subprocess.run(cmd + rest, capture_output=True, text=True)
+            if scratch:
+                scratch.cleanup()
             sys.stdout.write(run.stdout)
             if run.returncode:
                 sys.stderr.write(run.stderr)

@@ -40,7 +40,11 @@ from checklist import check, status  # noqa: E402  (this folder)
 
 
 def measured(args, *more):
-    return subprocess.run([sys.executable, SCRIPT, *more], capture_output=True, text=True)
+    """The script, with its own temporary folder (fused_silica checks that nothing is left in it)"""
+    tmp = os.path.join(args.workdir, "tmp")
+    os.makedirs(tmp, exist_ok=True)
+    return subprocess.run([sys.executable, SCRIPT, *more], capture_output=True, text=True,
+                          env=dict(os.environ, TMPDIR=tmp))
 
 
 def fused_silica(args):
@@ -73,6 +77,8 @@ def fused_silica(args):
               f"means of {len(E)} tests: E_r {np.mean(E):.2f} +- {np.std(E):.2f} GPa against {np.mean(Eref):.2f} "
               f"({100 * me:+.1f}%), H {np.mean(H):.3f} +- {np.std(H):.3f} GPa against {np.mean(Href):.3f} "
               f"({100 * mh:+.1f}%)")
+    left = os.listdir(os.path.join(args.workdir, "tmp"))
+    check(not left, f"--op removed its temporary curve files ({len(left)} left)")
 
 
 def synthetic(args):
