@@ -425,8 +425,8 @@ PetscErrorCode IndSolverCreate(DM dm, IndAssembly assembly, IndBC bc, IndContact
     "Newton fails after this many iterations without a 1% smaller residual (0: never)",
                           NULL, s->stall_its, &s->stall_its, NULL));
   PetscCall(IndOptionsBool("-newton_pc_single",
-    "The multigrid's products in single precision: its smoothers, coarse operators and interpolations (the Krylov "
-    "method's stay in double; needs -jac_block_products)", single, &single, NULL));
+    "The multigrid's products in single precision: its smoothers and coarse operators, not its interpolations (the "
+    "Krylov method's stay in double; needs -jac_block_products)", single, &single, NULL));
   PetscCall(IndOptionsBool("-newton_pc_galerkin_blocks",
     "The multigrid's coarse operators P^T A P computed by blocks, not by PETSc's AIJ product (the same operators, "
     "faster and in less memory; doc/performance.md)", galerkin, &galerkin, NULL));
