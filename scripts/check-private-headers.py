@@ -24,6 +24,7 @@ WHITE_BOX = {
     "tests/test_held_lu.c": {"solvers": "reads the size of the free block the section's direct solve factors"},
     "tests/test_linesearch.c": {"solvers": "unit test of depth control's line search, private to the solvers"},
     "tests/test_pcreuse.c": {"solvers": "unit test of the rule that rebuilds the multigrid, private to the solvers"},
+    "tests/test_box.c": {"mesh": "unit test of the grid of ranks the box built in blocks chooses, private to the mesh"},
     "tests/solver_anatomy.c": {"contact": "diagnostic that takes the Jacobian apart",
                                "solvers": "diagnostic that takes the Jacobian apart",
                                "physics": "diagnostic that takes the Jacobian apart"},

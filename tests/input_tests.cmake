@@ -226,6 +226,9 @@ indent_script_test(bad_volume_name ${EXPECT_ERROR} --fresh ${CMAKE_CURRENT_BINAR
   "${RE_BLANK_NAME}"
   ${INDENT} -mesh_file ${CMAKE_CURRENT_SOURCE_DIR}/meshes/blank_name.geo -bc_fixed bottom
   -output_dir ${CMAKE_CURRENT_BINARY_DIR}/bad_volume_name)
+indent_script_test(bad_partitioner_blocks_with_file ${EXPECT_ERROR}
+  "-mesh_partitioner blocks is for the built-in box. a mesh read from -mesh_file needs ptscotch, metis or simple"
+  ${INDENT} -mesh_file ${MESHDIR}/cube41.msh ${ELASTIC} -mesh_partitioner blocks -bc_fixed bottom -output_fields 0)
 indent_script_test(bad_empty_volume ${EXPECT_ERROR}
   "Volume region 'ghost' of mesh '.*ghost.msh' is empty: its physical volume has no cells"
   ${INDENT} -mesh_file ${MESHDIR}/ghost.msh ${ELASTIC} -ghost_young 1 -ghost_poisson 0.3 -bc_fixed bottom -output_fields

@@ -32,5 +32,3 @@ PetscErrorCode IndMeshGetRegionLabel(IndMesh mesh, const char name[], PetscInt d
 /* Errors (collectively) when the region has no cells (dim 3) or faces (dim 2): a physical group of the
    mesh file without elements. option names what uses it (surfaces). */
 PetscErrorCode IndMeshCheckRegionNotEmpty(IndMesh mesh, const char name[], PetscInt dim, const char option[]);
-/* Sets the partitioner of a serial mesh from -mesh_partitioner (partition.c). */
-PetscErrorCode IndMeshSetPartitioner(DM dm);

@@ -160,7 +160,7 @@ static PetscErrorCode AddRegion(IndMesh mesh, const char name[], PetscInt dim, c
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode CreateBoxMesh(MPI_Comm comm, IndMesh mesh)
+static PetscErrorCode CreateBoxMesh(MPI_Comm comm, PetscBool blocks, IndMesh mesh)
 {
   PetscInt  faces[3] = {2, 2, 2}, n = 3, cStart, cEnd;
   PetscBool set;
@@ -189,7 +189,8 @@ static PetscErrorCode CreateBoxMesh(MPI_Comm comm, IndMesh mesh)
     PetscCheck(upper[d] > lower[d], comm, PETSC_ERR_ARG_OUTOFRANGE,
       "-dm_plex_box_upper must exceed -dm_plex_box_lower in every direction");
   }
-  PetscCall(DMPlexCreateBoxMesh(comm, 3, PETSC_FALSE, faces, lower, upper, NULL, PETSC_TRUE, &mesh->dm));
+  if (blocks) PetscCall(IndBoxCreateDistributed(comm, faces, lower, upper, &mesh->dm));
+  else PetscCall(DMPlexCreateBoxMesh(comm, 3, PETSC_FALSE, faces, lower, upper, NULL, PETSC_TRUE, &mesh->dm));
   PetscCall(DMCreateLabel(mesh->dm, "Cell Sets"));
   PetscCall(DMGetLabel(mesh->dm, "Cell Sets", &cells));
   PetscCall(DMPlexGetHeightStratum(mesh->dm, 0, &cStart, &cEnd));
@@ -275,9 +276,42 @@ static inline uint64_t SplitMix64(uint64_t z)
   return z ^ (z >> 31);
 }
 
+/* The vertices on the boundary: the closure of the box's "Face Sets" (all six sides, on the box built in blocks
+   as on the serial one), or of the faces with one cell of a mesh read from a file (still serial here: on a
+   distributed mesh the faces between ranks would count too). */
+static PetscErrorCode MarkBoundary(IndMesh mesh, PetscBool box, DMLabel boundary)
+{
+  PetscFunctionBeginUser;
+  if (box) {
+    DMLabel faceSets;
+    IS      values;
+    PetscInt nvalues;
+    const PetscInt *v;
+    PetscCall(DMGetLabel(mesh->dm, "Face Sets", &faceSets));
+    PetscCall(DMLabelGetValueIS(faceSets, &values));
+    PetscCall(ISGetLocalSize(values, &nvalues));
+    PetscCall(ISGetIndices(values, &v));
+    for (PetscInt i = 0; i < nvalues; ++i) {
+      IS              pts;
+      PetscInt        npts = 0;
+      const PetscInt *p    = NULL;
+      PetscCall(DMLabelGetStratumIS(faceSets, v[i], &pts));
+      if (pts) PetscCall(ISGetLocalSize(pts, &npts));
+      if (pts) PetscCall(ISGetIndices(pts, &p));
+      for (PetscInt k = 0; k < npts; ++k) PetscCall(DMLabelSetValue(boundary, p[k], 1));
+      if (pts) PetscCall(ISRestoreIndices(pts, &p));
+      PetscCall(ISDestroy(&pts));
+    }
+    PetscCall(ISRestoreIndices(values, &v));
+    PetscCall(ISDestroy(&values));
+  } else PetscCall(DMPlexMarkBoundaryFaces(mesh->dm, 1, boundary));
+  PetscCall(DMPlexLabelComplete(mesh->dm, boundary));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* Moves interior vertices by up to frac * (shortest edge) in a direction hashed from the vertex's
    own coordinates, so the distorted mesh does not depend on the numbering. */
-static PetscErrorCode PerturbInteriorVertices(IndMesh mesh, PetscReal frac)
+static PetscErrorCode PerturbInteriorVertices(IndMesh mesh, PetscBool box, PetscReal frac)
 {
   DM           dm = mesh->dm, cdm;
   DMLabel      boundary;
@@ -313,8 +347,7 @@ static PetscErrorCode PerturbInteriorVertices(IndMesh mesh, PetscReal frac)
   }
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &hmin, 1, MPIU_REAL, MPI_MIN, PetscObjectComm((PetscObject)dm)));
   PetscCall(DMLabelCreate(PETSC_COMM_SELF, "boundary", &boundary));
-  PetscCall(DMPlexMarkBoundaryFaces(dm, 1, boundary));
-  PetscCall(DMPlexLabelComplete(dm, boundary));
+  PetscCall(MarkBoundary(mesh, box, boundary));
   for (PetscInt v = vStart; v < vEnd; ++v) {
     PetscInt    off, val;
     uint64_t h = 0;
@@ -517,7 +550,8 @@ PetscErrorCode IndMeshCreate(MPI_Comm comm, IndMesh *out)
   PetscBool has_file, has_params, is_geo = PETSC_FALSE, listing = IndHelpListing(), listed = PETSC_FALSE;
   PetscInt  refine = 0;
   PetscReal perturb = 0;
-  PetscBool reorder = PETSC_TRUE;
+  PetscBool reorder = PETSC_TRUE, blocks;
+  IndPartitionerType partitioner;
 
   PetscFunctionBeginUser;
   /* Before anything is read or made: a run that cannot write its results should not start. */
@@ -550,7 +584,8 @@ PetscErrorCode IndMeshCreate(MPI_Comm comm, IndMesh *out)
     "Random displacement of interior vertices of the mesh as read, as a fraction of its shortest edge (tests)", "",
     NULL, perturb, &perturb, NULL));
   PetscCall(IndOptionsBool("-mesh_reorder",
-    "Renumber the mesh as read by reverse Cuthill-McKee before distribution (locality of assembly and solves)",
+    "Renumber the mesh made on rank 0 by reverse Cuthill-McKee before distribution (locality of assembly and "
+    "solves; the box built in blocks is in lexicographic order already)",
     reorder, &reorder, NULL));
   PetscOptionsEnd();
   PetscCheck(refine >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-mesh_refine must be >= 0, got %" PetscInt_FMT, refine);
@@ -584,26 +619,29 @@ PetscErrorCode IndMeshCreate(MPI_Comm comm, IndMesh *out)
     }
   }
   PetscCheck(!nparams || is_geo, comm, PETSC_ERR_ARG_WRONG, "-mesh_geo_parameters needs a .geo -mesh_file");
+  PetscCall(IndMeshGetPartitionerType(comm, has_file ? PETSC_FALSE : PETSC_TRUE, &partitioner));
+  blocks = !has_file && partitioner == IND_PARTITIONER_BLOCKS ? PETSC_TRUE : PETSC_FALSE;
   for (PetscInt i = 0; i < nparams; ++i) PetscCall(PetscFree(params[i]));
   if (has_file && !listed) {
     PetscCall(CheckMeshFile(comm, file));
     PetscCall(ReadMeshFile(comm, file, &mesh->dm));
     PetscCall(PetscStrncpy(mesh->source, file, sizeof(mesh->source)));
     PetscCall(ReadGmshPhysicalNames(comm, file, mesh));
-  } else if (!has_file) PetscCall(CreateBoxMesh(comm, mesh));
+  } else if (!has_file) PetscCall(CreateBoxMesh(comm, blocks, mesh));
   PetscCall(PetscObjectSetName((PetscObject)mesh->dm, "mesh"));
   PetscCall(CheckCellTypes(comm, mesh));
   if (mesh->dim == 2) PetscCall(PlaceSectionInXZ(comm, mesh));
-  /* On the serial mesh, where every boundary face is plainly one, so any rank count gets the same mesh. */
-  if (perturb > 0) PetscCall(PerturbInteriorVertices(mesh, perturb));
+  /* Hashed from positions, so any rank count gets the same mesh. */
+  if (perturb > 0) PetscCall(PerturbInteriorVertices(mesh, has_file ? PETSC_FALSE : PETSC_TRUE, perturb));
   PetscCall(PetscLogEventEnd(IndLog.mesh_create, 0, 0, 0, 0));
 
   PetscCall(PetscLogEventBegin(IndLog.mesh_distribute, 0, 0, 0, 0));
-  /* before the distribution, which keeps the order within each rank's part */
-  if (reorder) PetscCall(ReorderForLocality(mesh));
-  PetscCall(IndMeshSetPartitioner(mesh->dm));
-  {
+  /* before the distribution, which keeps the order within each rank's part; the box in blocks is born
+     distributed, each rank's cells in lexicographic order */
+  if (reorder && !blocks) PetscCall(ReorderForLocality(mesh));
+  if (!blocks) {
     DM dist = NULL;
+    PetscCall(IndMeshSetPartitioner(mesh->dm, partitioner));
     PetscCall(DMPlexDistribute(mesh->dm, 0, NULL, &dist));
     if (dist) { /* NULL on one rank: keep the serial mesh */
       PetscCall(DMDestroy(&mesh->dm));

@@ -1,4 +1,4 @@
-#include "ind_mesh.h"
+#include "mesh_impl.h"
 #if defined(INDENT_HAVE_METIS)
   #include <metis.h>
 #endif
@@ -51,32 +51,47 @@ static PetscErrorCode SetMetisPartition(DM dm, PetscPartitioner part)
 }
 #endif
 
-PetscErrorCode IndMeshSetPartitioner(DM dm)
+PetscErrorCode IndMeshGetPartitionerType(MPI_Comm comm, PetscBool box, IndPartitionerType *type)
 {
-  MPI_Comm         comm = PetscObjectComm((PetscObject)dm);
-  PetscPartitioner part;
-  const char      *types[] = {"ptscotch", "metis", "simple"};
-  PetscInt         choice  = 0;
+  const char *types[] = {"ptscotch", "metis", "simple", "blocks"};
+  PetscInt    choice  = box ? IND_PARTITIONER_BLOCKS : IND_PARTITIONER_PTSCOTCH;
 
   PetscFunctionBeginUser;
   PetscOptionsBegin(comm, NULL, IND_TITLE "Mesh partitioning", "Mesh");
-  PetscCall(IndOptionsEList("-mesh_partitioner", "Partitioner of the serial mesh", types, 3, choice, &choice, NULL));
+  PetscCall(IndOptionsEList("-mesh_partitioner",
+    "How the cells go to the ranks: a graph partitioner of the mesh made on rank 0 (from -mesh_file, or the box), "
+    "or blocks: the box built on every rank at once (the box's default)", types, 4, choice, &choice, NULL));
   PetscOptionsEnd();
+  PetscCheck(box || choice != IND_PARTITIONER_BLOCKS, comm, PETSC_ERR_ARG_WRONG,
+    "-mesh_partitioner blocks is for the built-in box; a mesh read from -mesh_file needs ptscotch, metis or simple");
+#if !defined(INDENT_HAVE_METIS)
+  PetscCheck(choice != IND_PARTITIONER_METIS, comm, PETSC_ERR_SUP,
+    "-mesh_partitioner metis: this indent was built without METIS (install libmetis-dev and reconfigure)");
+#endif
+  *type = (IndPartitionerType)choice;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode IndMeshSetPartitioner(DM dm, IndPartitionerType type)
+{
+  PetscPartitioner part;
+
+  PetscFunctionBeginUser;
   PetscCall(DMPlexGetPartitioner(dm, &part));
-  switch (choice) {
-  case 0:
+  switch (type) {
+  case IND_PARTITIONER_PTSCOTCH:
     PetscCall(PetscPartitionerSetType(part, PETSCPARTITIONERPTSCOTCH));
     break;
-  case 1:
+  case IND_PARTITIONER_METIS:
 #if defined(INDENT_HAVE_METIS)
     PetscCall(SetMetisPartition(dm, part));
-#else
-    SETERRQ(comm, PETSC_ERR_SUP,
-      "-mesh_partitioner metis: this indent was built without METIS (install libmetis-dev and reconfigure)");
 #endif
     break;
-  default:
+  case IND_PARTITIONER_SIMPLE:
     PetscCall(PetscPartitionerSetType(part, PETSCPARTITIONERSIMPLE));
+    break;
+  default:
+    SETERRQ(PetscObjectComm((PetscObject)dm), PETSC_ERR_PLIB, "a box built in blocks is not partitioned again");
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
