@@ -10,8 +10,8 @@
    The ranks form a grid px x py x pz over the cells; each axis's cells are split as evenly as integers allow.
    Each rank makes its block with PETSc's own hexahedral box on itself alone (cells in lexicographic order, x
    fastest: neighbours stay close in memory, as the reverse Cuthill-McKee order of a mesh read from a file does),
-   copies it into a mesh on the communicator, and the points on the planes between blocks are joined by the point
-   SF, matched by position. A point belongs to the block of the cell whose lowest corner it lies on (clamped to the
+   copies it into a mesh on the communicator (on one rank the box is PETSc's box itself), and the points on the
+   planes between blocks are joined by the point SF, matched by position. A point belongs to the block of the cell whose lowest corner it lies on (clamped to the
    last cell along each axis), which always holds it. (Built from a list of cells, the interpolation of faces and
    edges alone took 1.7 s a rank on the 2-rank box of 63^3 cells; PETSc's box makes them directly.) */
 
@@ -87,18 +87,24 @@ static PetscErrorCode BoxLayoutDestroy(BoxLayout *L)
 }
 
 /* The block of cells [c0, c1) made by PETSc's box on this rank alone, copied into a mesh on comm (the same points,
-   cones and orientations), its vertices at the whole box's lattice coordinates. pos[3 p] is the position of point p
-   (but cells) in half cells: a vertex (2i, 2j, 2k), an edge's midpoint one odd coordinate, a face's centre two. */
+   cones and orientations), its vertices at the whole box's lattice coordinates. On one rank the block is the box,
+   made on comm at once. */
 static PetscErrorCode CreateBlock(MPI_Comm comm, const PetscInt c0[3], const PetscInt c1[3], const PetscInt n[3],
-  const PetscReal lower[3], const PetscReal upper[3], DM *dm, PetscInt **pos)
+  const PetscReal lower[3], const PetscReal upper[3], DM *dm)
 {
   DM           blk;
+  PetscMPIInt  size;
   PetscInt     numPoints[4] = {0, 0, 0, 0}, pStart = 0, pEnd = 0, vStart = 0, vEnd = 0, nb[3], off = 0;
   PetscInt    *coneSize = NULL, *cones = NULL, *orients = NULL;
   PetscScalar *coords = NULL;
   PetscReal    lo[3], hi[3], h[3];
 
   PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_size(comm, &size));
+  if (size == 1) {
+    PetscCall(DMPlexCreateBoxMesh(comm, 3, PETSC_FALSE, n, lower, upper, NULL, PETSC_TRUE, dm));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
   for (int d = 0; d < 3; ++d) {
     nb[d] = c1[d] - c0[d];
     h[d]  = (upper[d] - lower[d]) / n[d];
@@ -108,7 +114,6 @@ static PetscErrorCode CreateBlock(MPI_Comm comm, const PetscInt c0[3], const Pet
   PetscCall(DMCreate(comm, dm));
   PetscCall(DMSetType(*dm, DMPLEX));
   PetscCall(DMSetDimension(*dm, 3));
-  *pos = NULL;
   if (!nb[0] || !nb[1] || !nb[2]) { /* a rank without cells */
     PetscCall(DMPlexCreateFromDAG(*dm, 3, numPoints, NULL, NULL, NULL, NULL));
     PetscFunctionReturn(PETSC_SUCCESS);
@@ -123,8 +128,6 @@ static PetscErrorCode CreateBlock(MPI_Comm comm, const PetscInt c0[3], const Pet
     if (!d) vStart = s, vEnd = e;
   }
   PetscCall(PetscMalloc1(pEnd, &coneSize));
-  PetscCall(PetscMalloc1(3 * pEnd, pos));
-  for (PetscInt k = 0; k < 3 * pEnd; ++k) (*pos)[k] = -1; /* cells: never shared */
   for (PetscInt p = 0; p < pEnd; ++p) {
     PetscCall(DMPlexGetConeSize(blk, p, &coneSize[p]));
     off += coneSize[p];
@@ -153,7 +156,6 @@ static PetscErrorCode CreateBlock(MPI_Comm comm, const PetscInt c0[3], const Pet
       for (int d = 0; d < 3; ++d) {
         /* the lattice index, and the coordinate by the formula of PETSc's box of the whole: the same to the bit */
         const PetscInt i = c0[d] + (PetscInt)round((double)((PetscRealPart(x[o + d]) - lo[d]) / h[d]));
-        (*pos)[3 * v + d]               = 2 * i;
         coords[3 * (v - vStart) + d] = lower[d] + ((upper[d] - lower[d]) / n[d]) * i;
       }
     }
@@ -162,20 +164,52 @@ static PetscErrorCode CreateBlock(MPI_Comm comm, const PetscInt c0[3], const Pet
   PetscCall(DMDestroy(&blk));
   PetscCall(DMPlexCreateFromDAG(*dm, 3, numPoints, coneSize, cones, orients, coords));
   PetscCall(PetscFree3(cones, orients, coords));
-  /* edges from their vertices, then faces from their edges (the mean of four edges' midpoints) */
-  for (PetscInt depth = 1; depth <= 2; ++depth) {
-    PetscInt s, e;
-    PetscCall(DMPlexGetDepthStratum(*dm, depth, &s, &e));
-    for (PetscInt p = s; p < e; ++p) {
-      const PetscInt *cone;
-      PetscInt        sum[3] = {0, 0, 0};
-      PetscCall(DMPlexGetCone(*dm, p, &cone));
-      for (PetscInt k = 0; k < coneSize[p]; ++k)
-        for (int d = 0; d < 3; ++d) sum[d] += (*pos)[3 * cone[k] + d];
-      for (int d = 0; d < 3; ++d) (*pos)[3 * p + d] = sum[d] / coneSize[p];
+  PetscCall(PetscFree(coneSize));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* pos[3 p], the position of point p (but cells, -1) in half cells: a vertex (2i, 2j, 2k), an edge's midpoint one odd
+   coordinate, a face's centre two. Vertices from their lattice coordinates, edges from their vertices, faces from
+   their edges (the mean of four midpoints). */
+static PetscErrorCode PointPositions(DM dm, const PetscInt n[3], const PetscReal lower[3], const PetscReal upper[3],
+  PetscInt **pos)
+{
+  PetscInt           pStart, pEnd, vStart, vEnd;
+  Vec                X;
+  PetscSection       cs;
+  const PetscScalar *x;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMPlexGetChart(dm, &pStart, &pEnd));
+  PetscCheck(pStart == 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "the box's chart starts at %" PetscInt_FMT, pStart);
+  PetscCall(PetscMalloc1(3 * pEnd, pos));
+  for (PetscInt k = 0; k < 3 * pEnd; ++k) (*pos)[k] = -1;
+  PetscCall(DMPlexGetDepthStratum(dm, 0, &vStart, &vEnd));
+  PetscCall(DMGetCoordinatesLocal(dm, &X));
+  PetscCall(DMGetCoordinateSection(dm, &cs));
+  PetscCall(VecGetArrayRead(X, &x));
+  for (PetscInt v = vStart; v < vEnd; ++v) {
+    PetscInt o;
+    PetscCall(PetscSectionGetOffset(cs, v, &o));
+    for (int d = 0; d < 3; ++d) {
+      const PetscReal h = (upper[d] - lower[d]) / n[d];
+      (*pos)[3 * v + d] = 2 * (PetscInt)round((double)((PetscRealPart(x[o + d]) - lower[d]) / h));
     }
   }
-  PetscCall(PetscFree(coneSize));
+  PetscCall(VecRestoreArrayRead(X, &x));
+  for (PetscInt depth = 1; depth <= 2; ++depth) {
+    PetscInt s, e;
+    PetscCall(DMPlexGetDepthStratum(dm, depth, &s, &e));
+    for (PetscInt p = s; p < e; ++p) {
+      const PetscInt *cone;
+      PetscInt        nc, sum[3] = {0, 0, 0};
+      PetscCall(DMPlexGetConeSize(dm, p, &nc));
+      PetscCall(DMPlexGetCone(dm, p, &cone));
+      for (PetscInt k = 0; k < nc; ++k)
+        for (int d = 0; d < 3; ++d) sum[d] += (*pos)[3 * cone[k] + d];
+      for (int d = 0; d < 3; ++d) (*pos)[3 * p + d] = sum[d] / nc;
+    }
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -281,7 +315,8 @@ PetscErrorCode IndBoxCreateDistributed(MPI_Comm comm, const PetscInt faces[3], c
     c0[d] = L.cellStart[d][b[d]];
     c1[d] = L.cellStart[d][b[d] + 1];
   }
-  PetscCall(CreateBlock(comm, c0, c1, faces, lower, upper, dm, &pos));
+  PetscCall(CreateBlock(comm, c0, c1, faces, lower, upper, dm));
+  PetscCall(PointPositions(*dm, faces, lower, upper, &pos));
   PetscCall(JoinBlocks(*dm, &L, rank, c0, c1, pos));
   PetscCall(MarkFaceSets(*dm, faces, pos));
   PetscCall(PetscFree(pos));
