@@ -11,9 +11,10 @@
    Each rank makes its block with PETSc's own hexahedral box on itself alone (cells in lexicographic order, x
    fastest: neighbours stay close in memory, as the reverse Cuthill-McKee order of a mesh read from a file does),
    copies it into a mesh on the communicator (on one rank the box is PETSc's box itself), and the points on the
-   planes between blocks are joined by the point SF, matched by position. A point belongs to the block of the cell whose lowest corner it lies on (clamped to the
-   last cell along each axis), which always holds it. (Built from a list of cells, the interpolation of faces and
-   edges alone took 1.7 s a rank on the 2-rank box of 63^3 cells; PETSc's box makes them directly.) */
+   planes between blocks are joined by the point SF, matched by position. A point belongs to the block of the cell
+   whose lowest corner it lies on (clamped to the last cell along each axis), which always holds it. (Built from a
+   list of cells, the interpolation of faces and edges alone took 1.7 s a rank on the 2-rank box of 63^3 cells;
+   PETSc's box makes them directly.) */
 
 typedef struct {
   PetscInt  grid[3];        /* ranks along x, y, z */
@@ -86,6 +87,29 @@ static PetscErrorCode BoxLayoutDestroy(BoxLayout *L)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The lattice index of every vertex of dm, on a lattice from lo with spacing h: idx[3 (v - vStart) + d]. */
+static PetscErrorCode VertexLattice(DM dm, const PetscReal lo[3], const PetscReal h[3], PetscInt idx[])
+{
+  PetscInt           vStart, vEnd;
+  Vec                X;
+  PetscSection       cs;
+  const PetscScalar *x;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMPlexGetDepthStratum(dm, 0, &vStart, &vEnd));
+  PetscCall(DMGetCoordinatesLocal(dm, &X));
+  PetscCall(DMGetCoordinateSection(dm, &cs));
+  PetscCall(VecGetArrayRead(X, &x));
+  for (PetscInt v = vStart; v < vEnd; ++v) {
+    PetscInt o;
+    PetscCall(PetscSectionGetOffset(cs, v, &o));
+    for (int d = 0; d < 3; ++d)
+      idx[3 * (v - vStart) + d] = (PetscInt)round((double)((PetscRealPart(x[o + d]) - lo[d]) / h[d]));
+  }
+  PetscCall(VecRestoreArrayRead(X, &x));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* The block of cells [c0, c1) made by PETSc's box on this rank alone, copied into a mesh on comm (the same points,
    cones and orientations), its vertices at the whole box's lattice coordinates. On one rank the block is the box,
    made on comm at once. */
@@ -95,7 +119,7 @@ static PetscErrorCode CreateBlock(MPI_Comm comm, const PetscInt c0[3], const Pet
   DM           blk;
   PetscMPIInt  size;
   PetscInt     numPoints[4] = {0, 0, 0, 0}, pStart = 0, pEnd = 0, vStart = 0, vEnd = 0, nb[3], off = 0;
-  PetscInt    *coneSize = NULL, *cones = NULL, *orients = NULL;
+  PetscInt    *coneSize = NULL, *cones = NULL, *orients = NULL, *lattice = NULL;
   PetscScalar *coords = NULL;
   PetscReal    lo[3], hi[3], h[3];
 
@@ -132,7 +156,7 @@ static PetscErrorCode CreateBlock(MPI_Comm comm, const PetscInt c0[3], const Pet
     PetscCall(DMPlexGetConeSize(blk, p, &coneSize[p]));
     off += coneSize[p];
   }
-  PetscCall(PetscMalloc3(off, &cones, off, &orients, 3 * (vEnd - vStart), &coords));
+  PetscCall(PetscMalloc4(off, &cones, off, &orients, 3 * (vEnd - vStart), &coords, 3 * (vEnd - vStart), &lattice));
   off = 0;
   for (PetscInt p = 0; p < pEnd; ++p) {
     const PetscInt *cone, *ornt;
@@ -143,27 +167,14 @@ static PetscErrorCode CreateBlock(MPI_Comm comm, const PetscInt c0[3], const Pet
       orients[off] = ornt[k];
     }
   }
-  {
-    Vec                X;
-    PetscSection       cs;
-    const PetscScalar *x;
-    PetscCall(DMGetCoordinatesLocal(blk, &X));
-    PetscCall(DMGetCoordinateSection(blk, &cs));
-    PetscCall(VecGetArrayRead(X, &x));
-    for (PetscInt v = vStart; v < vEnd; ++v) {
-      PetscInt o;
-      PetscCall(PetscSectionGetOffset(cs, v, &o));
-      for (int d = 0; d < 3; ++d) {
-        /* the lattice index, and the coordinate by the formula of PETSc's box of the whole: the same to the bit */
-        const PetscInt i = c0[d] + (PetscInt)round((double)((PetscRealPart(x[o + d]) - lo[d]) / h[d]));
-        coords[3 * (v - vStart) + d] = lower[d] + ((upper[d] - lower[d]) / n[d]) * i;
-      }
-    }
-    PetscCall(VecRestoreArrayRead(X, &x));
-  }
+  /* the coordinates by the formula of PETSc's box of the whole: the same to the bit */
+  PetscCall(VertexLattice(blk, lo, h, lattice));
+  for (PetscInt v = 0; v < vEnd - vStart; ++v)
+    for (int d = 0; d < 3; ++d)
+      coords[3 * v + d] = lower[d] + ((upper[d] - lower[d]) / n[d]) * (c0[d] + lattice[3 * v + d]);
   PetscCall(DMDestroy(&blk));
   PetscCall(DMPlexCreateFromDAG(*dm, 3, numPoints, coneSize, cones, orients, coords));
-  PetscCall(PetscFree3(cones, orients, coords));
+  PetscCall(PetscFree4(cones, orients, coords, lattice));
   PetscCall(PetscFree(coneSize));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -174,10 +185,8 @@ static PetscErrorCode CreateBlock(MPI_Comm comm, const PetscInt c0[3], const Pet
 static PetscErrorCode PointPositions(DM dm, const PetscInt n[3], const PetscReal lower[3], const PetscReal upper[3],
   PetscInt **pos)
 {
-  PetscInt           pStart, pEnd, vStart, vEnd;
-  Vec                X;
-  PetscSection       cs;
-  const PetscScalar *x;
+  PetscInt  pStart, pEnd, vStart, vEnd;
+  PetscReal h[3];
 
   PetscFunctionBeginUser;
   PetscCall(DMPlexGetChart(dm, &pStart, &pEnd));
@@ -185,18 +194,9 @@ static PetscErrorCode PointPositions(DM dm, const PetscInt n[3], const PetscReal
   PetscCall(PetscMalloc1(3 * pEnd, pos));
   for (PetscInt k = 0; k < 3 * pEnd; ++k) (*pos)[k] = -1;
   PetscCall(DMPlexGetDepthStratum(dm, 0, &vStart, &vEnd));
-  PetscCall(DMGetCoordinatesLocal(dm, &X));
-  PetscCall(DMGetCoordinateSection(dm, &cs));
-  PetscCall(VecGetArrayRead(X, &x));
-  for (PetscInt v = vStart; v < vEnd; ++v) {
-    PetscInt o;
-    PetscCall(PetscSectionGetOffset(cs, v, &o));
-    for (int d = 0; d < 3; ++d) {
-      const PetscReal h = (upper[d] - lower[d]) / n[d];
-      (*pos)[3 * v + d] = 2 * (PetscInt)round((double)((PetscRealPart(x[o + d]) - lower[d]) / h));
-    }
-  }
-  PetscCall(VecRestoreArrayRead(X, &x));
+  for (int d = 0; d < 3; ++d) h[d] = (upper[d] - lower[d]) / n[d];
+  PetscCall(VertexLattice(dm, lower, h, *pos + 3 * vStart));
+  for (PetscInt k = 3 * vStart; k < 3 * vEnd; ++k) (*pos)[k] *= 2;
   for (PetscInt depth = 1; depth <= 2; ++depth) {
     PetscInt s, e;
     PetscCall(DMPlexGetDepthStratum(dm, depth, &s, &e));
