@@ -283,9 +283,9 @@ static PetscErrorCode MarkBoundary(IndMesh mesh, PetscBool box, DMLabel boundary
 {
   PetscFunctionBeginUser;
   if (box) {
-    DMLabel faceSets;
-    IS      values;
-    PetscInt nvalues;
+    DMLabel         faceSets;
+    IS              values;
+    PetscInt        nvalues;
     const PetscInt *v;
     PetscCall(DMGetLabel(mesh->dm, "Face Sets", &faceSets));
     PetscCall(DMLabelGetValueIS(faceSets, &values));
