@@ -176,7 +176,7 @@ def main():
             if os.path.exists(csv) and sum(1 for _ in open(csv)) > args.stop:
                 break
             time.sleep(0.05)
-        proc.send_signal(getattr(signal, "SIG" + args.signal))
+        indentrun.signal_mid_run(proc, getattr(signal, "SIG" + args.signal))
         out, _ = proc.communicate()
         code = proc.returncode
         indentrun.pass_on_unfreed(out)

@@ -3,7 +3,7 @@
 
   check_runlock.py --mpiexec M --indent BIN --workdir D [--np N] [--live-steps S] -- <indent options>
 
- 1. while a run (of S load steps, long enough to outlive what follows) writes into a directory, a
+ 1. while a run writes into a directory (its ranks held by SIGSTOP, so that it outlives what follows), a
     second fresh run, an -output_overwrite run and a -restart run
     into it are each refused with one line 'indent: error: ... is in use by a run started ... (pid P)'
     naming the owner's pid, and the first run's files stay; the first run then finishes (exit 0) and its
@@ -49,19 +49,19 @@ def refused(status, lines, label, *words):
 def main():
     ap, mine, options = indentrun.parser_and_options("check_runlock.py")
     ap.add_argument("--np", type=int, default=2)
-    ap.add_argument("--live-steps", default="250", help="-load_steps of the run that must outlive the refusals")
+    ap.add_argument("--live-steps", default="250", help="-load_steps of the runs that must outlive another")
     args = ap.parse_args(mine)
     shutil.rmtree(args.workdir, ignore_errors=True)
     os.makedirs(args.workdir)
 
     # 1. a live run's directory
     live = os.path.join(args.workdir, "live")
-    cmd = command(args, [*options, "-load_steps", args.live_steps, "-output_dir", live])
+    cmd = command(args, [*options, "-load_steps", args.live_steps, "-checkpoint_every", "1", "-output_dir", live])
     print("+", " ".join(cmd), flush=True)
     first = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
     lock = os.path.join(live, LOCK)
     deadline = time.time() + 60
-    while not os.path.exists(os.path.join(live, "load_displacement.csv")) and time.time() < deadline \
+    while not os.path.exists(os.path.join(live, "checkpoint.h5")) and time.time() < deadline \
             and first.poll() is None:
         time.sleep(0.05)
     if check(first.poll() is None and os.path.exists(lock), "the first run holds the lock while it runs"):
@@ -70,15 +70,20 @@ def main():
         pid = owner[1] if len(owner) > 1 else "?"
         kept = ("load_displacement.csv", "mesh.msh")
         sizes = {n: os.path.getsize(os.path.join(live, n)) for n in kept}
-        status, lines = run(args, [*options, "-output_dir", live])
-        refused(status, lines, "a fresh run into it", "-output_dir", "is in use by a run started", f"pid {pid}")
-        status, lines = run(args, [*options, "-output_dir", live, "-output_overwrite"])
-        refused(status, lines, "-output_overwrite on it", "-output_overwrite", f"pid {pid}")
-        status, lines = run(args, [*options, "-output_dir", live, "-restart", live])
-        check(status != 0 and len(lines) == 1, f"-restart on it: refused in one line ({lines[:2]})")
-        check(all(os.path.exists(os.path.join(live, n)) and os.path.getsize(os.path.join(live, n)) >= sizes[n]
-                  for n in kept), "the first run's curve and mesh are there, whole")
-        check(first.poll() is None, "the first run was still running through all three (else the test proves nothing)")
+        # The ranks are held (SIGSTOP) while the three try, so that the run outlives them however fast it is.
+        ranks = indentrun.ranks_below(first.pid)
+        check(len(ranks) == args.np, f"the first run's {args.np} ranks found ({ranks})")
+        with indentrun.held(ranks):
+            status, lines = run(args, [*options, "-output_dir", live])
+            refused(status, lines, "a fresh run into it", "-output_dir", "is in use by a run started", f"pid {pid}")
+            status, lines = run(args, [*options, "-output_dir", live, "-output_overwrite"])
+            refused(status, lines, "-output_overwrite on it", "-output_overwrite", f"pid {pid}")
+            status, lines = run(args, [*options, "-output_dir", live, "-restart", live])
+            refused(status, lines, "-restart on it", "-restart", "is in use by a run started", f"pid {pid}")
+            check(all(os.path.exists(os.path.join(live, n)) and os.path.getsize(os.path.join(live, n)) >= sizes[n]
+                      for n in kept), "the first run's curve and mesh are there, whole")
+            check(first.poll() is None and all(os.path.exists(f"/proc/{r}") for r in ranks),
+                  "the first run was still running through all three (else the test proves nothing)")
     out, _ = first.communicate()
     check(first.returncode == 0, f"the first run finished (exit {first.returncode})")
     if first.returncode:
@@ -132,10 +137,12 @@ def main():
 
     # 3. two restarts of one checkpoint at once
     ck = os.path.join(args.workdir, "restarts")
-    status, _ = run(args, [*options, "-output_dir", ck, "-checkpoint_stop_after_step", "2"])
+    # Of S steps, so that the restart that wins is still running when the other one looks at the lock.
+    long_run = [*options, "-load_steps", args.live_steps, "-output_dir", ck]
+    status, _ = run(args, [*long_run, "-checkpoint_stop_after_step", "2"])
     if check(status == 75, f"a run stopped after step 2 with a checkpoint (exit {status})"):
         env = dict(os.environ, OMPI_MCA_orte_execute_quiet="1")
-        procs = [subprocess.Popen(command(args, [*options, "-output_dir", ck, "-restart", ck]), stdout=subprocess.PIPE,
+        procs = [subprocess.Popen(command(args, [*long_run, "-restart", ck]), stdout=subprocess.PIPE,
                                   stderr=subprocess.STDOUT, text=True, env=env) for _ in range(2)]
         results = [(p.wait(), p.communicate()[0]) for p in procs]
         codes = sorted(r[0] for r in results)

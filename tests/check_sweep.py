@@ -27,6 +27,9 @@ import subprocess
 import sys
 import time
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import indentrun  # noqa: E402
+
 FAILURES = []
 
 
@@ -260,7 +263,7 @@ def test_run(work):
         if os.path.exists(curve) and len(open(curve).read().splitlines()) >= 3:
             break
         time.sleep(0.05)
-    proc.send_signal(signal.SIGUSR1)
+    check(len(indentrun.signal_mid_run(proc, signal.SIGUSR1)) == 2, "SIGUSR1 sent while the run's 2 ranks ran")
     text, _ = proc.communicate(timeout=300)
     print(text)
     check(proc.returncode == 75, f"SIGUSR1 to the sweep: status 75 (got {proc.returncode})")

@@ -1,9 +1,12 @@
 """Shared by the test drivers that run indent: the `-- <indent options>` split and one checked run."""
 import argparse
+import contextlib
 import os
 import re
+import signal
 import subprocess
 import sys
+import time
 
 # PETSc's -malloc_dump report of an unfreed block (the tests run with it): ctest fails on these lines.
 UNFREED = re.compile(r"^\[ *\d+\] ?\d+ bytes \S+\(\) (at|line) ")
@@ -85,3 +88,59 @@ def run_quiet(mpiexec, nranks, indent, options):
     proc = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, env=env)
     pass_on_unfreed(proc.stdout)
     return proc.returncode, [line for line in proc.stdout.splitlines() if line.strip()]
+
+
+def ranks_below(pid, name="indent"):
+    """The processes called name among pid's descendants: the ranks an mpiexec (or a script over one) started
+    on this host."""
+    parent, called = {}, {}
+    for entry in os.listdir("/proc"):
+        if entry.isdigit():
+            try:
+                with open(f"/proc/{entry}/stat") as f:
+                    head, tail = f.read().rsplit(")", 1)
+                parent[int(entry)], called[int(entry)] = int(tail.split()[1]), head.split("(", 1)[1]
+            except (OSError, ValueError, IndexError):
+                pass  # ended while listed
+    found, below = [], [pid]
+    while below:
+        p = below.pop()
+        for child in (c for c, pp in parent.items() if pp == p):
+            below.append(child)
+            if called[child] == name:
+                found.append(child)
+    return sorted(found)
+
+
+@contextlib.contextmanager
+def held(pids):
+    """The processes stopped (SIGSTOP) inside the block and continued after it, so that a run cannot end,
+    however fast it is, while a test does something to it."""
+    for p in pids:
+        os.kill(p, signal.SIGSTOP)
+    try:
+        yield
+    finally:
+        for p in pids:
+            with contextlib.suppress(ProcessLookupError):
+                os.kill(p, signal.SIGCONT)
+
+
+def pending(pid, sig):
+    """Whether signal sig waits to be delivered to process pid (stopped, it cannot take it yet)."""
+    with open(f"/proc/{pid}/status") as f:
+        masks = [int(line.split()[1], 16) for line in f if line.startswith(("SigPnd:", "ShdPnd:"))]
+    return any(m >> (sig - 1) & 1 for m in masks)
+
+
+def signal_mid_run(proc, sig, timeout=30):
+    """Sends sig to proc (mpiexec, or a script that passes it on) with the ranks below it held until each has
+    it pending, so that the run sees the signal before it can finish: a stop signal sent to a fast run lands
+    mid-run on any machine. Returns the ranks' pids (empty: the run had ended)."""
+    ranks = ranks_below(proc.pid)
+    with held(ranks):
+        proc.send_signal(sig)
+        deadline = time.time() + timeout
+        while time.time() < deadline and not all(pending(r, sig) for r in ranks):
+            time.sleep(0.02)
+    return ranks
