@@ -117,7 +117,8 @@ def held(pids):
     """The processes stopped (SIGSTOP) inside the block and continued after it, so that a run cannot end,
     however fast it is, while a test does something to it."""
     for p in pids:
-        os.kill(p, signal.SIGSTOP)
+        with contextlib.suppress(ProcessLookupError):  # ended just before: nothing to hold
+            os.kill(p, signal.SIGSTOP)
     try:
         yield
     finally:
@@ -127,9 +128,13 @@ def held(pids):
 
 
 def pending(pid, sig):
-    """Whether signal sig waits to be delivered to process pid (stopped, it cannot take it yet)."""
-    with open(f"/proc/{pid}/status") as f:
-        masks = [int(line.split()[1], 16) for line in f if line.startswith(("SigPnd:", "ShdPnd:"))]
+    """Whether signal sig waits to be delivered to process pid (stopped, it cannot take it yet); a process that
+    has ended counts as having it (nothing is left to wait for)."""
+    try:
+        with open(f"/proc/{pid}/status") as f:
+            masks = [int(line.split()[1], 16) for line in f if line.startswith(("SigPnd:", "ShdPnd:"))]
+    except OSError:
+        return True
     return any(m >> (sig - 1) & 1 for m in masks)
 
 
